@@ -1,0 +1,32 @@
+import createSplinekitCore, { type SplinekitCoreModule } from './splinekit-core.mjs';
+import { SplinekitError } from './errors.js';
+
+let instance: SplinekitCoreModule | undefined;
+let loading: Promise<SplinekitCoreModule> | undefined;
+
+/**
+ * Loads the WebAssembly core. Call (and await) once before using anything else; later calls
+ * return the same instance. The same import works in Node, workers and browsers: the wasm is
+ * inlined in the module, so no file has to be located or fetched.
+ */
+export function init(): Promise<SplinekitCoreModule> {
+  loading ??= createSplinekitCore().then(
+    (m) => (instance = m),
+    (err: unknown) => {
+      loading = undefined;
+      throw new SplinekitError('internal', `could not load the splinekit WebAssembly core: ${String(err)}`, { cause: err });
+    },
+  );
+  return loading;
+}
+
+/** The loaded core; throws a SplinekitError('not-initialized') before `await init()`. */
+export function core(): SplinekitCoreModule {
+  if (!instance) throw new SplinekitError('not-initialized', 'splinekit is not initialized: call `await init()` first');
+  return instance;
+}
+
+/** Bytes currently in the wasm heap (grows, never shrinks): used by leak and allocation checks. */
+export function heapBytes(): number {
+  return core().HEAP8.length;
+}

@@ -1,0 +1,51 @@
+// Hand-written declarations of the Emscripten module built from wasm/bindings/ (emscripten 3.1.6
+// has no --emit-tsd). Keep in step with the EMSCRIPTEN_BINDINGS blocks.
+
+/** An embind object: its C++ memory is freed by delete(). */
+export interface EmbindObject {
+  delete(): void;
+  isDeleted(): boolean;
+}
+
+/** wasm/bindings/spline_bindings.cpp — SplineSetHandle. Status 0 = ok, else see error(). */
+export interface SplineSetHandle extends EmbindObject {
+  resize(splines: number, points: number): void;
+  points(): Float64Array;
+  starts(): Int32Array;
+  counts(): Int32Array;
+  closed(): Int32Array;
+  validate(): number;
+  error(): string;
+  segmentCount(): number;
+  junctionCount(): number;
+  bounds(): number;
+  classify(lengthTolerance: number, angleTolerance: number, ratioTolerance: number): number;
+  sample(perSegment: number): number;
+  segmentLengths(tolerance: number): number;
+  resultF64(): Float64Array;
+  resultI32(): Int32Array;
+}
+
+/** wasm/bindings/spline_bindings.cpp — BezierScratch: 16 doubles, the segment in [0,8). */
+export interface BezierScratch extends EmbindObject {
+  data(): Float64Array;
+  derivative(t: number, order: number): void;
+  split(t: number): void;
+  arcLength(t0: number, t1: number, tolerance: number): number;
+  bounds(): void;
+}
+
+export interface SplinekitCoreModule {
+  SplineSetHandle: { new (): SplineSetHandle };
+  BezierScratch: { new (): BezierScratch };
+  gramMatrix(): number[];
+  HEAP8: Int8Array;
+}
+
+export interface SplinekitCoreOptions {
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  locateFile?(path: string, prefix: string): string;
+}
+
+declare function createSplinekitCore(options?: SplinekitCoreOptions): Promise<SplinekitCoreModule>;
+export default createSplinekitCore;

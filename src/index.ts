@@ -1,0 +1,36 @@
+/**
+ * splinekit — keeps vector curves vector.
+ *
+ *   import { init, parseSVG } from 'splinekit';
+ *   await init();
+ *   const doc = parseSVG(svgText);
+ *
+ * Everything numeric runs in the C++/WebAssembly core; this package wraps it in small typed
+ * classes and handles files (SVG in and out).
+ */
+export { init, heapBytes } from './core/module.js';
+export { SplinekitError, type SplinekitErrorCode } from './core/errors.js';
+export {
+  CONTINUITY_KINDS,
+  cloneSpline,
+  junctionAnchor,
+  junctionCount,
+  segmentCount,
+  segmentOf,
+  type ContinuityKind,
+  type ContinuityTag,
+  type Spline,
+} from './spline/spline.js';
+export { SplineSet, DEFAULT_CONTINUITY, type ContinuityOptions } from './spline/spline-set.js';
+export { Bezier } from './spline/bezier.js';
+export { parseSVG, DEFAULT_MAX_BYTES, type ParseOptions } from './svg/import.js';
+export {
+  SvgDocument,
+  type ExportOptions,
+  type SplinesJSON,
+  type SvgShape,
+  type SvgStats,
+  type SvgWarning,
+} from './svg/document.js';
+export type { ResolvedStyle } from './svg/style.js';
+export type { Matrix } from './svg/matrix.js';

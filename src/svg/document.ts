@@ -1,0 +1,321 @@
+import { XMLSerializer } from '@xmldom/xmldom';
+import { cloneSpline, segmentCount, type ContinuityKind, type Spline } from '../spline/spline.js';
+import { invert, isIdentity, type Matrix } from './matrix.js';
+import { splinesToPathData } from './path-data.js';
+import type { ResolvedStyle } from './style.js';
+
+/** Something the model keeps as is (or could not carry), reported once per kind. */
+export interface SvgWarning {
+  code: string;
+  message: string;
+  count: number;
+}
+
+/** One drawn instance of a shape element (a `use` of a shape gives one more instance). */
+export interface SvgShape {
+  /** Element name in the file: 'path', 'rect', 'circle', 'ellipse', 'line', 'polyline', 'polygon'. */
+  tag: string;
+  id: string | null;
+  /** Line of the element in the file (1-based), 0 if unknown. */
+  line: number;
+  /** This shape's splines are splines[firstSpline … firstSpline + splineCount). */
+  firstSpline: number;
+  splineCount: number;
+  /** The element's user space → document space (its own transform and its ancestors'). */
+  transform: Matrix;
+  style: ResolvedStyle;
+  /** Ids (or tag names) of the `use` elements this instance was drawn through, outermost first. */
+  via: string[];
+}
+
+/** Counts `splinekit info` reports. */
+export interface SvgStats {
+  elements: number;
+  splines: number;
+  segments: number;
+  continuity: Record<ContinuityKind, number>;
+  warnings: number;
+}
+
+/** The JSON schema shared by the CLI commands (`splinekit info --json`, skin, …). */
+export interface SplinesJSON {
+  splines: { closed: boolean; points: [number, number][]; continuity: ContinuityKind[] }[];
+}
+
+export interface ExportOptions {
+  /**
+   * 'changed' (default) rewrites only shapes whose geometry differs from the file, so untouched
+   * markup stays byte-for-byte; 'all' rewrites every shape as a `<path>` from the splines.
+   */
+  rewrite?: 'changed' | 'all';
+}
+
+/** Where each shape came from in the retained markup (kept out of the public shape record). */
+export interface ShapeSource {
+  /** The `use` elements it was drawn through (outermost first) with the element each references. */
+  uses: { use: Element; ref: Element }[];
+  /** The shape element itself. */
+  element: Element;
+  /** The splines as imported, to tell changed geometry from unchanged. */
+  original: Float64Array[];
+}
+
+export interface SvgDocumentInit {
+  dom: Document;
+  splines: Spline[];
+  shapes: SvgShape[];
+  sources: ShapeSource[];
+  warnings: SvgWarning[];
+  width: number;
+  height: number;
+  viewBox: [number, number, number, number] | null;
+  bounds: [number, number, number, number] | null;
+}
+
+const GEOMETRY_ATTRIBUTES = ['d', 'x', 'y', 'width', 'height', 'rx', 'ry', 'cx', 'cy', 'r', 'x1', 'y1', 'x2', 'y2', 'points', 'pathLength'];
+const XLINK = 'http://www.w3.org/1999/xlink';
+
+/**
+ * An SVG drawing as cubic Bézier splines in document space (the user space of the root `svg`
+ * after element transforms, before its viewBox), plus the markup it came from, so that export
+ * writes back everything the splines do not describe (styles, gradients, text, metadata).
+ *
+ * Create with `parseSVG` (svg/import.ts). Splines may be edited in place (points, continuity
+ * tags); `toSVG()` writes them back into the markup.
+ */
+export class SvgDocument {
+  /** All splines, in document order. */
+  readonly splines: Spline[];
+  /** Drawn shapes in document order; each owns a run of `splines`. */
+  readonly shapes: SvgShape[];
+  readonly warnings: SvgWarning[];
+  /** Viewport size of the root `svg` (its width/height, else its viewBox size, else the bounds). */
+  readonly width: number;
+  readonly height: number;
+  /** The root's viewBox, or null: maps document space to the viewport. */
+  readonly viewBox: [number, number, number, number] | null;
+  /** Bounds of the curves at import, [xmin, ymin, xmax, ymax], or null for a drawing with none. */
+  readonly bounds: [number, number, number, number] | null;
+
+  private readonly dom: Document;
+  private readonly sources: ShapeSource[];
+
+  /** @internal use parseSVG */
+  constructor(init: SvgDocumentInit) {
+    this.dom = init.dom;
+    this.splines = init.splines;
+    this.shapes = init.shapes;
+    this.sources = init.sources;
+    this.warnings = init.warnings;
+    this.width = init.width;
+    this.height = init.height;
+    this.viewBox = init.viewBox;
+    this.bounds = init.bounds;
+  }
+
+  /** The drawing's size: the diagonal of its bounds (1 when it has no curves). Tolerances scale with it. */
+  get size(): number {
+    const b = this.bounds;
+    const d = b ? Math.hypot(b[2] - b[0], b[3] - b[1]) : 0;
+    return d > 0 ? d : 1;
+  }
+
+  /** The region to show: the viewBox, else the viewport, in document units. */
+  get frame(): [number, number, number, number] {
+    return this.viewBox ?? [0, 0, this.width, this.height];
+  }
+
+  /** A copy whose splines can be changed independently (the markup is shared, read-only). */
+  clone(): SvgDocument {
+    return new SvgDocument({
+      dom: this.dom,
+      splines: this.splines.map(cloneSpline),
+      shapes: this.shapes.map((s) => ({ ...s, via: [...s.via] })),
+      sources: this.sources,
+      warnings: this.warnings.map((w) => ({ ...w })),
+      width: this.width,
+      height: this.height,
+      viewBox: this.viewBox,
+      bounds: this.bounds,
+    });
+  }
+
+  stats(): SvgStats {
+    const continuity: Record<ContinuityKind, number> = { none: 0, C0: 0, C1: 0, G1: 0, angle: 0 };
+    let segments = 0;
+    for (const s of this.splines) {
+      segments += segmentCount(s);
+      for (const t of s.continuity) continuity[t.kind]++;
+    }
+    return {
+      elements: this.shapes.length,
+      splines: this.splines.length,
+      segments,
+      continuity,
+      warnings: this.warnings.reduce((n, w) => n + w.count, 0),
+    };
+  }
+
+  /** Geometry in the shared CLI schema: control points in document space, document order. */
+  toJSON(): SplinesJSON {
+    return {
+      splines: this.splines.map((s) => {
+        const points: [number, number][] = [];
+        for (let i = 0; i < s.points.length; i += 2) points.push([s.points[i], s.points[i + 1]]);
+        return { closed: s.closed, points, continuity: s.continuity.map((t) => t.kind) };
+      }),
+    };
+  }
+
+  /**
+   * A CSS color to paint `paint` with: itself for a color, a gradient's middle stop for
+   * `url(#gradient)` (the model keeps gradients as they are; this is a stand-in for previews),
+   * or null for 'none' and unresolvable references.
+   */
+  paintColor(paint: string): string | null {
+    const p = paint.trim();
+    if (p === 'none' || p === '') return null;
+    const m = /^url\(\s*['"]?#([^'")\s]+)['"]?\s*\)\s*(.*)$/.exec(p);
+    if (!m) return p;
+    let el: Element | null = this.byId(m[1]);
+    for (let hops = 0; el && hops < 8; hops++) {
+      const stops = Array.from(el.childNodes).filter((n): n is Element => n.nodeType === 1 && (n as Element).localName === 'stop');
+      if (stops.length > 0) {
+        const stop = stops[Math.floor((stops.length - 1) / 2)];
+        const style = stop.getAttribute('style') ?? '';
+        const fromStyle = /stop-color\s*:\s*([^;]+)/.exec(style)?.[1]?.trim();
+        return fromStyle ?? stop.getAttribute('stop-color') ?? 'black';
+      }
+      const href = el.getAttributeNS(XLINK, 'href') ?? el.getAttribute('href');
+      el = href?.startsWith('#') ? this.byId(href.slice(1)) : null;
+    }
+    return m[2] && m[2] !== 'none' ? m[2] : null;
+  }
+
+  private byId(id: string): Element | null {
+    return findById(this.dom.documentElement!, id);
+  }
+
+  /** The splines of shape i (a view into `splines`). */
+  splinesOf(i: number): Spline[] {
+    const s = this.shapes[i];
+    return this.splines.slice(s.firstSpline, s.firstSpline + s.splineCount);
+  }
+
+  private changed(i: number): boolean {
+    const shape = this.shapes[i], original = this.sources[i].original;
+    if (original.length !== shape.splineCount) return true;
+    for (let k = 0; k < shape.splineCount; k++) {
+      const a = this.splines[shape.firstSpline + k].points, b = original[k];
+      if (a.length !== b.length) return true;
+      for (let j = 0; j < a.length; j++) if (a[j] !== b[j]) return true;
+    }
+    return false;
+  }
+
+  /**
+   * Writes the document as SVG markup that draws the splines: shapes whose geometry changed (or
+   * all, with rewrite 'all') become `<path>`s with their attributes kept and their points mapped
+   * back into the element's own user space; `use` instances that changed are expanded in place.
+   */
+  toSVG(options: ExportOptions = {}): string {
+    const all = options.rewrite === 'all';
+    const out = this.dom.cloneNode(true) as Document;
+    const cloneOf = pairElements(this.dom.documentElement!, out.documentElement!);
+    const expansions = new Map<Element, Map<Element, Element>>();
+
+    // Resolves a shape's source to the element to rewrite in `out`, expanding `use`s on the way.
+    const target = (source: ShapeSource): Element | undefined => {
+      let map = cloneOf;
+      for (const { use, ref } of source.uses) {
+        const useCopy = map.get(use);
+        if (!useCopy) return undefined;
+        let inner = expansions.get(useCopy);
+        if (!inner) {
+          inner = expandUse(out, useCopy, ref, use);
+          expansions.set(useCopy, inner);
+        }
+        map = inner;
+      }
+      return map.get(source.element);
+    };
+
+    this.shapes.forEach((shape, i) => {
+      if (!all && !this.changed(i)) return;
+      const el = target(this.sources[i]);
+      if (!el) return;
+      const toLocal = invert(shape.transform);
+      if (!toLocal) return; // a collapsed (singular) element draws nothing either way
+      const d = splinesToPathData(this.splinesOf(i), isIdentity(toLocal) ? undefined : toLocal);
+      if (el.localName === 'path') {
+        el.setAttribute('d', d);
+        el.removeAttribute('pathLength');
+        return;
+      }
+      const path = out.createElementNS(el.namespaceURI, el.prefix ? `${el.prefix}:path` : 'path');
+      for (const attr of Array.from(el.attributes)) {
+        if (!GEOMETRY_ATTRIBUTES.includes(attr.localName ?? attr.name)) path.setAttributeNode(attr.cloneNode(true) as Attr);
+      }
+      path.setAttribute('d', d);
+      while (el.firstChild) path.appendChild(el.firstChild);
+      el.parentNode!.replaceChild(path, el);
+    });
+    const xml = new XMLSerializer().serializeToString(out as unknown as Parameters<XMLSerializer['serializeToString']>[0]);
+    return xml.startsWith('<?xml') ? xml : `<?xml version="1.0" encoding="UTF-8"?>\n${xml}`;
+  }
+}
+
+function findById(root: Element, id: string): Element | null {
+  const stack: Element[] = [root];
+  while (stack.length) {
+    const el = stack.pop()!;
+    if (el.getAttribute('id') === id) return el;
+    for (let c = el.lastChild; c; c = c.previousSibling) if (c.nodeType === 1) stack.push(c as Element);
+  }
+  return null;
+}
+
+/** Maps every element of `a` to the element at the same place in `b` (a structural copy of a). */
+function pairElements(a: Element, b: Element, into = new Map<Element, Element>()): Map<Element, Element> {
+  into.set(a, b);
+  let ca = a.firstChild, cb = b.firstChild;
+  while (ca && cb) {
+    if (ca.nodeType === 1) pairElements(ca as Element, cb as Element, into);
+    ca = ca.nextSibling;
+    cb = cb.nextSibling;
+  }
+  return into;
+}
+
+/**
+ * Replaces `use` (in the output) by a group holding a copy of the element it references, so its
+ * shapes can be written one by one. The group keeps the use's attributes (but its reference and
+ * geometry), its transform followed by translate(x, y); ids in the copy are dropped to stay
+ * unique. Returns the map from the original referenced subtree to the copy.
+ */
+function expandUse(out: Document, use: Element, referenced: Element, originalUse: Element): Map<Element, Element> {
+  const g = out.createElementNS(use.namespaceURI, use.prefix ? `${use.prefix}:g` : 'g');
+  for (const attr of Array.from(use.attributes)) {
+    const name = attr.localName ?? attr.name;
+    if (['href', 'x', 'y', 'width', 'height', 'transform'].includes(name)) continue;
+    g.setAttributeNode(attr.cloneNode(true) as Attr);
+  }
+  const x = parseFloat(originalUse.getAttribute('x') ?? '0') || 0, y = parseFloat(originalUse.getAttribute('y') ?? '0') || 0;
+  const transform = `${use.getAttribute('transform') ?? ''}${x || y ? ` translate(${x} ${y})` : ''}`.trim();
+  if (transform) g.setAttribute('transform', transform);
+  let copy = out.importNode(referenced, true) as Element;
+  const map = pairElements(referenced, copy);
+  for (const el of map.values()) el.removeAttribute('id');
+  if (referenced.localName === 'symbol') {
+    // A symbol draws only when instantiated: its copy becomes a nested svg of the use's size.
+    const svg = out.createElementNS(copy.namespaceURI, copy.prefix ? `${copy.prefix}:svg` : 'svg');
+    for (const attr of Array.from(copy.attributes)) svg.setAttributeNode(attr.cloneNode(true) as Attr);
+    for (const name of ['width', 'height']) svg.setAttribute(name, originalUse.getAttribute(name) ?? '100%');
+    while (copy.firstChild) svg.appendChild(copy.firstChild);
+    map.set(referenced, svg);
+    copy = svg;
+  }
+  g.appendChild(copy);
+  use.parentNode!.replaceChild(g, use);
+  return map;
+}

@@ -1,0 +1,131 @@
+import { SVGPathData, SVGPathDataTransformer, type SVGCommand } from 'svg-pathdata';
+import { SplinekitError } from '../core/errors.js';
+import type { Matrix } from './matrix.js';
+
+/** A spline before continuity is detected: flat points, 3n+1 (open) or 3n (closed). */
+export interface RawSpline {
+  closed: boolean;
+  points: Float64Array;
+}
+
+function checkFinite(commands: SVGCommand[], where: string): void {
+  for (const c of commands) {
+    for (const [k, v] of Object.entries(c)) {
+      if (typeof v === 'number' && !Number.isFinite(v)) {
+        throw new SplinekitError('invalid-path-data', `${where}: path data has a number that is not finite (${k} = ${v})`);
+      }
+    }
+  }
+}
+
+/**
+ * Converts SVG path data to cubic splines, one per subpath, in the path's own coordinates.
+ * Every command is supported: lines become cubics with handles at 1/3 and 2/3 (exact), quadratics
+ * are degree-elevated (exact), S/T reflect the previous control point, and elliptical arcs become
+ * cubics of at most 90° each. A subpath closed by Z whose last point is not its start gets a
+ * closing line; a subpath that is only a moveto becomes a one-point spline.
+ */
+export function pathDataToSplines(d: string, where: string): RawSpline[] {
+  let commands: SVGCommand[];
+  try {
+    const parsed = new SVGPathData(d);
+    checkFinite(parsed.commands, where);
+    // Straight C curves stay curves (normalizeC = false): their handles are part of the drawing.
+    commands = parsed
+      .toAbs()
+      .normalizeST()
+      .qtToC()
+      .transform(SVGPathDataTransformer.NORMALIZE_HVZ(false, true, true, false))
+      .aToC().commands;
+  } catch (err) {
+    if (err instanceof SplinekitError) throw err;
+    const reason = err instanceof Error ? err.message : String(err);
+    throw new SplinekitError('invalid-path-data', `${where}: bad path data: ${reason}`, { cause: err });
+  }
+  checkFinite(commands, where);
+
+  const out: RawSpline[] = [];
+  let pts: number[] | null = null;
+  let sx = 0, sy = 0; // subpath start
+  let cx = 0, cy = 0; // current point
+  const flush = (closed: boolean) => {
+    if (pts) out.push({ closed, points: Float64Array.from(pts) });
+    pts = null;
+  };
+  const begin = () => (pts ??= [cx, cy]);
+  const line = (x: number, y: number) => {
+    const p = begin();
+    p.push(cx + (x - cx) / 3, cy + (y - cy) / 3, cx + (2 * (x - cx)) / 3, cy + (2 * (y - cy)) / 3, x, y);
+  };
+  for (const c of commands) {
+    switch (c.type) {
+      case SVGPathData.MOVE_TO:
+        flush(false);
+        pts = [c.x, c.y];
+        sx = cx = c.x;
+        sy = cy = c.y;
+        break;
+      case SVGPathData.LINE_TO:
+        line(c.x, c.y);
+        cx = c.x;
+        cy = c.y;
+        break;
+      case SVGPathData.CURVE_TO:
+        begin().push(c.x1, c.y1, c.x2, c.y2, c.x, c.y);
+        cx = c.x;
+        cy = c.y;
+        break;
+      case SVGPathData.CLOSE_PATH: {
+        const p = begin();
+        if (p.length > 2) {
+          const tol = 1e-9 * Math.max(1, Math.abs(sx), Math.abs(sy));
+          if (Math.abs(cx - sx) > tol || Math.abs(cy - sy) > tol) line(sx, sy);
+          p.length -= 2; // the last anchor is the first one
+          flush(true);
+        } else {
+          flush(false);
+        }
+        cx = sx;
+        cy = sy;
+        break;
+      }
+      default:
+        throw new SplinekitError('internal', `${where}: unexpected path command after normalization (${c.type})`);
+    }
+  }
+  flush(false);
+  return out;
+}
+
+/** Shortest decimal that keeps 12 significant digits (relative error ≤ 5e-13). */
+export function formatNumber(v: number): string {
+  const s = String(Number(v.toPrecision(12)));
+  return s === '-0' ? '0' : s;
+}
+
+/**
+ * Path data for splines, optionally mapped by `m` (e.g. document → element space):
+ * "M p0 C p1 p2 p3 …", closed splines end with "Z".
+ */
+export function splinesToPathData(splines: readonly RawSpline[], m?: Matrix): string {
+  const parts: string[] = [];
+  const pt = (pts: Float64Array, i: number) => {
+    const x = pts[2 * i], y = pts[2 * i + 1];
+    return m
+      ? `${formatNumber(m.a * x + m.c * y + m.e)} ${formatNumber(m.b * x + m.d * y + m.f)}`
+      : `${formatNumber(x)} ${formatNumber(y)}`;
+  };
+  for (const s of splines) {
+    const n = s.points.length / 2;
+    if (n === 0) continue;
+    const segs = n <= 1 ? 0 : s.closed ? n / 3 : (n - 1) / 3;
+    let d = `M${pt(s.points, 0)}`;
+    for (let k = 0; k < segs; k++) {
+      const end = 3 * k + 3 >= n ? 0 : 3 * k + 3;
+      d += `C${pt(s.points, 3 * k + 1)} ${pt(s.points, 3 * k + 2)} ${pt(s.points, end)}`;
+    }
+    if (s.closed) d += 'Z';
+    parts.push(d);
+  }
+  return parts.join('');
+}
