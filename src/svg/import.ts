@@ -103,7 +103,10 @@ function parseXML(text: string, name: string): Document {
     if (!dom.documentElement) throw new Error('no root element');
     return dom as unknown as Document;
   } catch (err) {
-    const reason = (err instanceof Error ? err.message : String(err)).split('\n')[0].replace(/^.*caused Error: /, '');
+    const reason = (err instanceof Error ? err.message : String(err))
+      .split('\n')[0]
+      .replace(/^.*caused Error: /, '')
+      .replace(/^element parse error: Error: /, '');
     throw new SplinekitError('invalid-svg', `${name}: not well-formed XML: ${reason}`, { cause: err });
   }
 }

@@ -1,5 +1,6 @@
 import { SVGPathData, SVGPathDataTransformer, type SVGCommand } from 'svg-pathdata';
 import { SplinekitError } from '../core/errors.js';
+import { arcToCubics } from './arc.js';
 import type { Matrix } from './matrix.js';
 
 /** A spline before continuity is detected: flat points, 3n+1 (open) or 3n (closed). */
@@ -22,11 +23,13 @@ function checkFinite(commands: SVGCommand[], where: string): void {
  * Converts SVG path data to cubic splines, one per subpath, in the path's own coordinates.
  * Every command is supported: lines become cubics with handles at 1/3 and 2/3 (exact), quadratics
  * are degree-elevated (exact), S/T reflect the previous control point, and elliptical arcs become
- * cubics of at most 90° each. A subpath closed by Z whose last point is not its start gets a
+ * cubics of at most 90° each, within 1e-4 of the arc's size (svg/arc.ts). A subpath closed by Z whose last point is not its start gets a
  * closing line; a subpath that is only a moveto becomes a one-point spline.
  */
 export function pathDataToSplines(d: string, where: string): RawSpline[] {
   let commands: SVGCommand[];
+  const word = /(?:^|[^a-z])(nan|[+-]?infinity)(?:$|[^a-z])/i.exec(d);
+  if (word) throw new SplinekitError('invalid-path-data', `${where}: bad path data: "${word[1]}" is not a number`);
   try {
     const parsed = new SVGPathData(d);
     checkFinite(parsed.commands, where);
@@ -35,14 +38,22 @@ export function pathDataToSplines(d: string, where: string): RawSpline[] {
       .toAbs()
       .normalizeST()
       .qtToC()
-      .transform(SVGPathDataTransformer.NORMALIZE_HVZ(false, true, true, false))
-      .aToC().commands;
+      .transform(SVGPathDataTransformer.NORMALIZE_HVZ(false, true, true, false)).commands;
   } catch (err) {
     if (err instanceof SplinekitError) throw err;
     const reason = err instanceof Error ? err.message : String(err);
     throw new SplinekitError('invalid-path-data', `${where}: bad path data: ${reason}`, { cause: err });
   }
   checkFinite(commands, where);
+
+  // On-curve points bound the path's size from below: arcs are made accurate relative to it.
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (const c of commands) {
+    if (!('x' in c) || !('y' in c)) continue; // Z (H and V are lines by now)
+    minX = Math.min(minX, c.x); maxX = Math.max(maxX, c.x);
+    minY = Math.min(minY, c.y); maxY = Math.max(maxY, c.y);
+  }
+  const pathSize = Number.isFinite(minX) ? Math.hypot(maxX - minX, maxY - minY) : 0;
 
   const out: RawSpline[] = [];
   let pts: number[] | null = null;
@@ -72,6 +83,11 @@ export function pathDataToSplines(d: string, where: string): RawSpline[] {
         break;
       case SVGPathData.CURVE_TO:
         begin().push(c.x1, c.y1, c.x2, c.y2, c.x, c.y);
+        cx = c.x;
+        cy = c.y;
+        break;
+      case SVGPathData.ARC:
+        begin().push(...arcToCubics(cx, cy, c, pathSize));
         cx = c.x;
         cy = c.y;
         break;

@@ -1,0 +1,46 @@
+// Shared helpers of the unit tests: where the shared data is, and independent geometry
+// (plain JS, not the wasm core) to check the core against.
+import { readdirSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+
+export const repoRoot = new URL('../../', import.meta.url).pathname;
+export const sharedData = join(repoRoot, '../shared/data');
+
+/** Every SVG in ../shared/data/svg, as paths relative to the data folder. */
+export function sharedSvgs(): string[] {
+  const out: string[] = [];
+  for (const dir of readdirSync(join(sharedData, 'svg'))) {
+    for (const f of readdirSync(join(sharedData, 'svg', dir))) if (f.endsWith('.svg')) out.push(`svg/${dir}/${f}`);
+  }
+  return out.sort();
+}
+
+export function readShared(rel: string): string {
+  return readFileSync(join(sharedData, rel), 'utf8');
+}
+
+/** Point of a cubic at t by the power basis (independent of the core's Bernstein evaluation). */
+export function cubicAt(c: ArrayLike<number>, t: number): [number, number] {
+  const out: [number, number] = [0, 0];
+  for (let a = 0; a < 2; a++) {
+    const p0 = c[a], p1 = c[2 + a], p2 = c[4 + a], p3 = c[6 + a];
+    out[a] = p0 + t * (3 * (p1 - p0) + t * (3 * (p0 - 2 * p1 + p2) + t * (p3 - 3 * p2 + 3 * p1 - p0)));
+  }
+  return out;
+}
+
+/** Largest distance between corresponding x,y pairs of two arrays of the same length. */
+export function maxDistance(a: ArrayLike<number>, b: ArrayLike<number>): number {
+  if (a.length !== b.length) throw new Error(`lengths differ: ${a.length} vs ${b.length}`);
+  let m = 0;
+  for (let i = 0; i < a.length; i += 2) m = Math.max(m, Math.hypot(a[i] - b[i], a[i + 1] - b[i + 1]));
+  return m;
+}
+
+import { spawnSync } from 'node:child_process';
+
+/** Runs the built CLI (dist/cli/splinekit.js, made by `npm run build` / scripts/setup.sh). */
+export function cli(args: string[], cwd = repoRoot): { code: number; stdout: string; stderr: string } {
+  const r = spawnSync(process.execPath, [join(repoRoot, 'dist/cli/splinekit.js'), ...args], { cwd, encoding: 'utf8' });
+  return { code: r.status ?? -1, stdout: r.stdout, stderr: r.stderr };
+}

@@ -1,0 +1,66 @@
+// The npm package as a user gets it: `npm pack`, install the tarball into an empty folder, and
+// use the API (the README's embedding example, verbatim) and the CLI from there, with nothing
+// but node on the PATH (no emscripten, no build tools).
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { afterAll, beforeAll, expect, test } from 'vitest';
+import { repoRoot, sharedData } from './helpers.js';
+
+const work = mkdtempSync(join(tmpdir(), 'splinekit-pkg-'));
+const app = join(work, 'app');
+const bin = join(work, 'bin');
+let files: string[] = [];
+
+/** PATH with node alone: proves the installed package needs no toolchain. */
+const env = () => ({ PATH: bin, HOME: work });
+
+beforeAll(() => {
+  if (!existsSync(join(repoRoot, 'dist/index.js'))) throw new Error('dist/ is missing: run `npm run build` (npm test does) first');
+  const packed = JSON.parse(execFileSync('npm', ['pack', '--json', '--pack-destination', work], { cwd: repoRoot, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }));
+  files = packed[0].files.map((f: { path: string }) => f.path);
+  mkdirSync(app);
+  writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', version: '1.0.0', type: 'module', private: true }));
+  execFileSync('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel=error', join(work, packed[0].filename)], { cwd: app, stdio: 'ignore' });
+  mkdirSync(bin);
+  symlinkSync(process.execPath, join(bin, 'node'));
+}, 180_000);
+
+afterAll(() => rmSync(work, { recursive: true, force: true }));
+
+test('the tarball holds the built JS, the wasm, types and the CLI, and no tests or data', () => {
+  for (const f of ['dist/index.js', 'dist/index.d.ts', 'dist/core/splinekit-core.mjs', 'dist/core/splinekit-core.d.mts', 'dist/cli/splinekit.js', 'README.md', 'LICENSE', 'package.json']) {
+    expect(files).toContain(f);
+  }
+  expect(files.filter((f) => !f.startsWith('dist/') && !['README.md', 'LICENSE', 'package.json'].includes(f))).toEqual([]);
+  expect(files.some((f) => /\.(svg|obj|ply|ttf|otf)$/.test(f) || f.includes('test'))).toBe(false);
+});
+
+test('the README embedding example runs from the installed package', () => {
+  const readme = readFileSync(join(repoRoot, 'README.md'), 'utf8');
+  const m = /<!-- embed-example:start -->\s*```js\n([\s\S]*?)```\s*<!-- embed-example:end -->/.exec(readme);
+  expect(m, 'README embedding example').not.toBeNull();
+  writeFileSync(join(app, 'example.mjs'), m![1]);
+  const r = spawnSync(join(bin, 'node'), ['example.mjs'], { cwd: app, env: env(), encoding: 'utf8' });
+  expect(r.stderr).toBe('');
+  expect(r.status).toBe(0);
+  const [counts, ...svg] = r.stdout.split('\n');
+  expect(counts).toBe('2 elements, 2 splines, 5 segments, 4 C1 junctions');
+  const out = svg.join('\n');
+  // The circle became a path in its group's space (document y 25 → local 15), keeping its fill.
+  expect(out).toContain('<g transform="translate(10 10)"><path fill="teal" d="M35 15C35 28.2842712475 ');
+  expect(out).toContain('<path d="M5 90 Q50 40 95 90" stroke="black" fill="none"/>');
+});
+
+test('the installed CLI runs with node alone on the PATH', () => {
+  const r = spawnSync(join(app, 'node_modules/.bin/splinekit'), ['info', join(sharedData, 'svg/icons/fa_dragon.svg'), '--json', '-'], { cwd: app, env: env(), encoding: 'utf8' });
+  expect(r.stderr).toBe('');
+  expect(r.status).toBe(0);
+  const json = JSON.parse(r.stdout);
+  expect(json.counts.elements).toBe(1);
+  expect(json.splines).toHaveLength(4); // the dragon's 4 subpaths (outline and holes)
+  const bad = spawnSync(join(app, 'node_modules/.bin/splinekit'), ['info', join(app, 'package.json')], { cwd: app, env: env(), encoding: 'utf8' });
+  expect(bad.status).toBe(1);
+  expect(bad.stderr).toMatch(/^splinekit: package\.json: not well-formed XML|^splinekit: package\.json: /);
+});

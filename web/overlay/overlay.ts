@@ -1,0 +1,226 @@
+import {
+  BufferGeometry,
+  Float32BufferAttribute,
+  Group,
+  LineBasicMaterial,
+  LineSegments,
+  Points,
+  ShaderMaterial,
+  type Material,
+} from 'three';
+import { junctionCount, type SvgDocument } from '../../src/index.js';
+import type { AnchorSelection } from '../app/state.js';
+import type { View2D } from '../view2d/view2d.js';
+import { CONTINUITY_COLORS, END_COLOR, HANDLE_COLOR, HANDLE_LINE_COLOR, OUTLINE_COLOR, SELECTION_COLOR, hexToRGB } from './colors.js';
+
+/** Marker shapes drawn by the point shader. */
+const enum Marker {
+  Square = 0,
+  Circle = 1,
+}
+
+/** Point sprites of constant screen size with a dark outline, colored per point. */
+function markerMaterial(marker: Marker, sizePx: number, pixelRatio: number): ShaderMaterial {
+  return new ShaderMaterial({
+    uniforms: {
+      uSize: { value: sizePx * pixelRatio },
+      uBorder: { value: Math.max(1, pixelRatio) },
+      uOutline: { value: hexToRGB(OUTLINE_COLOR) },
+    },
+    vertexShader: /* glsl */ `
+      attribute vec3 tint;
+      uniform float uSize;
+      varying vec3 vTint;
+      void main() {
+        vTint = tint;
+        gl_PointSize = uSize;
+        gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+      }`,
+    fragmentShader: /* glsl */ `
+      uniform float uSize;
+      uniform float uBorder;
+      uniform vec3 uOutline;
+      varying vec3 vTint;
+      void main() {
+        vec2 c = gl_PointCoord * 2.0 - 1.0;
+        float d = ${marker === Marker.Square ? 'max(abs(c.x), abs(c.y))' : 'length(c)'};
+        if (d > 1.0) discard;
+        float edge = 1.0 - 2.0 * uBorder / uSize;
+        gl_FragColor = vec4(d > edge ? uOutline : vTint, 1.0);
+      }`,
+    depthTest: false,
+    depthWrite: false,
+  });
+}
+
+const ANCHOR_PX = 8;
+const HANDLE_PX = 6;
+const SELECTED_PX = 13;
+/** How far from an anchor (in screen pixels) a click still picks it. */
+const PICK_PX = 8;
+
+/**
+ * The control-point overlay: anchors as squares colored by their continuity tag (ends of open
+ * splines in white), handles as dots joined to their anchors, the selected anchor enlarged.
+ * Everything keeps its screen size at any zoom.
+ */
+export class ControlOverlay {
+  readonly group = new Group();
+  private doc: SvgDocument | null = null;
+  /** Per anchor: its spline and point index (for picking and recoloring). */
+  private anchorSpline = new Int32Array(0);
+  private anchorPoint = new Int32Array(0);
+  private anchorXY = new Float64Array(0);
+  private readonly anchors: Points;
+  private readonly handles: Points;
+  private readonly lines: LineSegments;
+  private readonly selected: Points;
+  private readonly hovered: Points;
+
+  constructor(private readonly view: View2D) {
+    const ratio = view.renderer.getPixelRatio();
+    this.lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ color: HANDLE_LINE_COLOR, transparent: true, opacity: 0.9, depthTest: false, depthWrite: false }));
+    this.handles = new Points(new BufferGeometry(), markerMaterial(Marker.Circle, HANDLE_PX, ratio));
+    this.anchors = new Points(new BufferGeometry(), markerMaterial(Marker.Square, ANCHOR_PX, ratio));
+    this.hovered = new Points(new BufferGeometry(), markerMaterial(Marker.Square, ANCHOR_PX + 3, ratio));
+    this.selected = new Points(new BufferGeometry(), markerMaterial(Marker.Square, SELECTED_PX, ratio));
+    [this.lines, this.handles, this.anchors, this.hovered, this.selected].forEach((o, i) => {
+      o.frustumCulled = false;
+      o.renderOrder = 100 + i;
+      this.group.add(o);
+    });
+    this.group.name = 'control-overlay';
+    view.overlayLayer.add(this.group);
+  }
+
+  get visible(): boolean {
+    return this.group.visible;
+  }
+  set visible(v: boolean) {
+    this.group.visible = v;
+    this.view.requestRender();
+  }
+
+  /** Number of anchors and handles drawn. */
+  get counts(): { anchors: number; handles: number } {
+    return { anchors: this.anchorPoint.length, handles: (this.handles.geometry.getAttribute('position')?.count as number | undefined) ?? 0 };
+  }
+
+  setDocument(doc: SvgDocument | null): void {
+    this.doc = doc;
+    const anchorXY: number[] = [], spl: number[] = [], pt: number[] = [];
+    const handleXYZ: number[] = [], lineXYZ: number[] = [];
+    doc?.splines.forEach((s, si) => {
+      const p = s.points, n = p.length / 2;
+      for (let i = 0; i < n; i++) {
+        if (i % 3 === 0) {
+          anchorXY.push(p[2 * i], p[2 * i + 1]);
+          spl.push(si);
+          pt.push(i);
+          continue;
+        }
+        // Handle i belongs to the anchor before it (i = 3k+1) or after it (i = 3k+2).
+        const a = i % 3 === 1 ? i - 1 : (i + 1) % n;
+        handleXYZ.push(p[2 * i], p[2 * i + 1], 0);
+        lineXYZ.push(p[2 * a], p[2 * a + 1], 0, p[2 * i], p[2 * i + 1], 0);
+      }
+    });
+    this.anchorXY = Float64Array.from(anchorXY);
+    this.anchorSpline = Int32Array.from(spl);
+    this.anchorPoint = Int32Array.from(pt);
+    const anchorXYZ = new Float32Array(spl.length * 3);
+    for (let i = 0; i < spl.length; i++) {
+      anchorXYZ[3 * i] = anchorXY[2 * i];
+      anchorXYZ[3 * i + 1] = anchorXY[2 * i + 1];
+    }
+    this.setPositions(this.anchors, anchorXYZ);
+    this.anchors.geometry.setAttribute('tint', new Float32BufferAttribute(new Float32Array(spl.length * 3), 3));
+    this.setPositions(this.handles, new Float32Array(handleXYZ));
+    const handleTint = new Float32Array(handleXYZ.length);
+    for (let i = 0; i < handleTint.length; i += 3) handleTint.set(hexToRGB(HANDLE_COLOR), i);
+    this.handles.geometry.setAttribute('tint', new Float32BufferAttribute(handleTint, 3));
+    this.setPositions(this.lines, new Float32Array(lineXYZ));
+    this.recolor();
+    this.setSelection(null);
+    this.setHover(null);
+  }
+
+  /** Re-reads the continuity tags (after an override). */
+  recolor(): void {
+    const doc = this.doc;
+    const tint = this.anchors.geometry.getAttribute('tint') as Float32BufferAttribute | undefined;
+    if (!doc || !tint) return;
+    const colors = tint.array as Float32Array;
+    const end = hexToRGB(END_COLOR);
+    const byKind = Object.fromEntries(Object.entries(CONTINUITY_COLORS).map(([k, hex]) => [k, hexToRGB(hex)]));
+    for (let i = 0; i < this.anchorPoint.length; i++) {
+      const kind = this.kindAt(this.anchorSpline[i], this.anchorPoint[i]);
+      colors.set(kind ? byKind[kind] : end, 3 * i);
+    }
+    tint.needsUpdate = true;
+    this.view.requestRender();
+  }
+
+  setSelection(sel: AnchorSelection | null): void {
+    this.mark(this.selected, sel, hexToRGB(SELECTION_COLOR));
+  }
+
+  setHover(sel: AnchorSelection | null): void {
+    const kind = sel ? this.kindAt(sel.spline, sel.anchor) : null;
+    this.mark(this.hovered, sel, hexToRGB(kind ? CONTINUITY_COLORS[kind] : END_COLOR));
+  }
+
+  /** The anchor nearest to a screen point within the pick radius, or null. */
+  pick(sx: number, sy: number): AnchorSelection | null {
+    if (!this.group.visible || !this.doc) return null;
+    const [x, y] = this.view.viewport.toDoc(sx, sy);
+    const r = PICK_PX / this.view.viewport.scale;
+    let best = -1, bestD = r * r;
+    const xy = this.anchorXY;
+    // Later anchors are drawn on top: prefer them on ties.
+    for (let i = 0; i < this.anchorPoint.length; i++) {
+      const dx = xy[2 * i] - x, dy = xy[2 * i + 1] - y, d = dx * dx + dy * dy;
+      if (d <= bestD) {
+        bestD = d;
+        best = i;
+      }
+    }
+    return best < 0 ? null : { spline: this.anchorSpline[best], anchor: this.anchorPoint[best] };
+  }
+
+  /** The continuity kind at an anchor, or null for the end of an open spline. */
+  private kindAt(spline: number, anchor: number) {
+    const s = this.doc?.splines[spline];
+    if (!s) return null;
+    const j = s.closed ? anchor / 3 : anchor / 3 - 1;
+    return j >= 0 && j < junctionCount(s) ? s.continuity[j].kind : null;
+  }
+
+  private mark(points: Points, sel: AnchorSelection | null, rgb: [number, number, number]): void {
+    const p = sel && this.doc?.splines[sel.spline]?.points;
+    if (!sel || !p || 2 * sel.anchor + 1 >= p.length) {
+      points.visible = false;
+    } else {
+      this.setPositions(points, new Float32Array([p[2 * sel.anchor], p[2 * sel.anchor + 1], 0]));
+      points.geometry.setAttribute('tint', new Float32BufferAttribute(new Float32Array(rgb), 3));
+      points.visible = true;
+    }
+    this.view.requestRender();
+  }
+
+  private setPositions(o: Points | LineSegments, xyz: Float32Array): void {
+    const old = o.geometry;
+    const g = new BufferGeometry();
+    g.setAttribute('position', new Float32BufferAttribute(xyz, 3));
+    old.dispose();
+    o.geometry = g;
+  }
+
+  dispose(): void {
+    for (const o of [this.lines, this.handles, this.anchors, this.hovered, this.selected]) {
+      o.geometry.dispose();
+      (o.material as Material).dispose();
+    }
+    this.group.removeFromParent();
+  }
+}

@@ -1,0 +1,129 @@
+import {
+  BufferGeometry,
+  Color,
+  DoubleSide,
+  Float32BufferAttribute,
+  Mesh,
+  MeshBasicMaterial,
+  Path,
+  ShapePath,
+  ShapeUtils,
+  SRGBColorSpace,
+  Uint32BufferAttribute,
+  type Vector2,
+} from 'three';
+import { SVGLoader } from 'three/examples/jsm/loaders/SVGLoader.js';
+import type { SvgDocument } from '../../src/index.js';
+import { cssColor } from './color.js';
+import { flattenSpline } from './tessellate.js';
+
+export interface DrawingStats {
+  vertices: number;
+  triangles: number;
+  /** Time to tessellate and triangulate, in milliseconds. */
+  ms: number;
+}
+
+/** Growable vertex/color/index buffers for one merged mesh. */
+class MeshBuffers {
+  positions: number[] = [];
+  colors: number[] = [];
+  indices: number[] = [];
+  private color = new Color();
+
+  get vertexCount(): number {
+    return this.positions.length / 3;
+  }
+
+  /** Sets the color (linear RGB from an sRGB CSS color) and alpha for vertices added next. */
+  setColor(rgba: readonly [number, number, number, number], alpha: number): [number, number, number, number] {
+    this.color.setRGB(rgba[0], rgba[1], rgba[2], SRGBColorSpace);
+    return [this.color.r, this.color.g, this.color.b, alpha];
+  }
+
+  addVertices(xyz: ArrayLike<number>, count: number, rgba: readonly number[]): void {
+    for (let i = 0; i < 3 * count; i++) this.positions.push(xyz[i]);
+    for (let i = 0; i < count; i++) this.colors.push(rgba[0], rgba[1], rgba[2], rgba[3]);
+  }
+
+  toGeometry(): BufferGeometry {
+    const g = new BufferGeometry();
+    g.setAttribute('position', new Float32BufferAttribute(this.positions, 3));
+    g.setAttribute('color', new Float32BufferAttribute(this.colors, 4));
+    g.setIndex(new Uint32BufferAttribute(this.indices, 1));
+    return g;
+  }
+}
+
+/**
+ * The document painted from its spline model as one mesh: for every visible shape in document
+ * order, its fill (fill-rule and holes through ShapePath.toShapes) then its stroke
+ * (SVGLoader.pointsToStroke on the flattened splines, width scaled by the shape's transform).
+ * Colors and alpha are per vertex, so a single draw call keeps the painter's order.
+ */
+export function buildDrawing(doc: SvgDocument, tolerance: number): { mesh: Mesh; stats: DrawingStats } {
+  const t0 = performance.now();
+  const buffers = new MeshBuffers();
+  const stroke: number[] = [];
+  const xyz: number[] = [];
+
+  doc.shapes.forEach((shape, i) => {
+    const style = shape.style;
+    if (!style.visible || shape.splineCount === 0) return;
+    const lines: Vector2[][] = doc.splinesOf(i).map((s) => flattenSpline(s, tolerance));
+
+    const fill = cssColor(doc.paintColor(style.fill) ?? 'none');
+    const fillAlpha = fill ? fill[3] * style.fillOpacity * style.opacity : 0;
+    if (fill && fillAlpha > 0) {
+      const rgba = buffers.setColor(fill, fillAlpha);
+      const shapePath = new ShapePath();
+      shapePath.userData = { style: { fillRule: style.fillRule } };
+      for (const line of lines) if (line.length >= 3) shapePath.subPaths.push(new Path(line));
+      for (const outline of shapePath.toShapes()) {
+        const { shape: contour, holes } = outline.extractPoints(1);
+        const outer = ShapeUtils.isClockWise(contour) ? contour : contour.reverse();
+        const inner = holes.map((h) => (ShapeUtils.isClockWise(h) ? h.reverse() : h));
+        const faces = ShapeUtils.triangulateShape(outer, inner); // drops duplicated end points first
+        const base = buffers.vertexCount;
+        xyz.length = 0;
+        for (const ring of [outer, ...inner]) for (const v of ring) xyz.push(v.x, v.y, 0);
+        buffers.addVertices(xyz, xyz.length / 3, rgba);
+        for (const f of faces) buffers.indices.push(base + f[0], base + f[1], base + f[2]);
+      }
+    }
+
+    const strokeColor = cssColor(doc.paintColor(style.stroke) ?? 'none');
+    const strokeAlpha = strokeColor ? strokeColor[3] * style.strokeOpacity * style.opacity : 0;
+    const t = shape.transform;
+    const width = style.strokeWidth * Math.sqrt(Math.abs(t.a * t.d - t.b * t.c));
+    if (strokeColor && strokeAlpha > 0 && width > 0) {
+      const rgba = buffers.setColor(strokeColor, strokeAlpha);
+      const join = style.strokeLinejoin === 'arcs' ? 'miter' : style.strokeLinejoin;
+      const pen = SVGLoader.getStrokeStyle(width, '#000', join, style.strokeLinecap, style.strokeMiterlimit);
+      for (const line of lines) {
+        if (line.length < 2) continue;
+        stroke.length = 0;
+        const count = SVGLoader.pointsToStrokeWithBuffers(line, pen, 6, tolerance * 0.01, stroke, undefined, undefined, 0);
+        const base = buffers.vertexCount;
+        buffers.addVertices(stroke, count, rgba);
+        for (let v = 0; v < count; v++) buffers.indices.push(base + v);
+      }
+    }
+  });
+
+  const geometry = buffers.toGeometry();
+  const material = new MeshBasicMaterial({
+    vertexColors: true,
+    transparent: true,
+    side: DoubleSide,
+    depthTest: false,
+    depthWrite: false,
+  });
+  const mesh = new Mesh(geometry, material);
+  mesh.frustumCulled = false;
+  mesh.name = 'drawing';
+  return {
+    mesh,
+    stats: { vertices: buffers.vertexCount, triangles: buffers.indices.length / 3, ms: performance.now() - t0 },
+  };
+}

@@ -1,0 +1,295 @@
+import {
+  BufferGeometry,
+  Color,
+  Float32BufferAttribute,
+  Group,
+  LineBasicMaterial,
+  LineLoop,
+  Mesh,
+  MeshBasicMaterial,
+  OrthographicCamera,
+  PlaneGeometry,
+  Scene,
+  WebGLRenderer,
+} from 'three';
+import type { SvgDocument } from '../../src/index.js';
+import { Emitter } from '../app/events.js';
+import { buildDrawing, type DrawingStats } from './drawing.js';
+import { Viewport } from './viewport.js';
+
+/** A pointer on the view, in screen (canvas CSS pixels) and document coordinates. */
+export interface ViewPointer {
+  sx: number;
+  sy: number;
+  x: number;
+  y: number;
+  button: number;
+  shiftKey: boolean;
+  altKey: boolean;
+  /** Ctrl, or Cmd on macOS. */
+  modKey: boolean;
+}
+
+/** Who gets pointer input that is not a pan (the active mode, through the editor). */
+export interface ViewInput {
+  pointerDown(p: ViewPointer): boolean;
+  pointerMove?(p: ViewPointer): void;
+  pointerUp?(p: ViewPointer): void;
+  click(p: ViewPointer): void;
+}
+
+export interface ViewEvents extends Record<string, unknown> {
+  /** The view transform changed (pan, zoom, fit, resize). */
+  view: Viewport;
+  /** A frame was drawn. */
+  render: number;
+  /** The drawing was (re)built from the model. */
+  drawing: DrawingStats;
+}
+
+const BACKGROUND = 0x1b1d21;
+const PAPER = 0xffffff;
+/** Tessellation tolerance in screen pixels. */
+const TOLERANCE_PX = 0.2;
+/** Pixels the pointer may travel and still make a click. */
+const CLICK_SLOP = 4;
+
+/**
+ * The 2D view: a three.js orthographic view of document space with y pointing down (as in SVG),
+ * rendering on demand. Pan with a drag on empty space, the middle button or Space + drag; zoom
+ * with the wheel around the cursor; `fit()` shows the document's frame.
+ */
+export class View2D {
+  readonly events = new Emitter<ViewEvents>();
+  readonly viewport = new Viewport();
+  readonly renderer: WebGLRenderer;
+  readonly scene = new Scene();
+  readonly camera = new OrthographicCamera(-1, 1, -1, 1, -10, 10);
+  /** Where overlays add their objects (drawn above the document). */
+  readonly overlayLayer = new Group();
+  input: ViewInput | null = null;
+
+  private readonly paper: Mesh<PlaneGeometry, MeshBasicMaterial>;
+  private readonly paperEdge: LineLoop;
+  private drawing: Mesh | null = null;
+  private doc: SvgDocument | null = null;
+  private builtScale = 0;
+  private rebuildTimer = 0;
+  private frameRequest = 0;
+  private spaceDown = false;
+  private drag: { id: number; sx: number; sy: number; lastX: number; lastY: number; pan: boolean; moved: boolean } | null = null;
+
+  constructor(readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, powerPreference: 'high-performance' });
+    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
+    this.renderer.setClearColor(new Color(BACKGROUND), 1);
+    const canvas = this.renderer.domElement;
+    canvas.className = 'view2d-canvas';
+    canvas.tabIndex = 0;
+    canvas.setAttribute('aria-label', 'Drawing');
+    container.appendChild(canvas);
+
+    this.paper = new Mesh(new PlaneGeometry(1, 1), new MeshBasicMaterial({ color: PAPER, depthTest: false, depthWrite: false }));
+    this.paper.renderOrder = -2;
+    this.paper.visible = false;
+    const edge = new BufferGeometry();
+    edge.setAttribute('position', new Float32BufferAttribute([-0.5, -0.5, 0, 0.5, -0.5, 0, 0.5, 0.5, 0, -0.5, 0.5, 0], 3));
+    this.paperEdge = new LineLoop(edge, new LineBasicMaterial({ color: 0x000000, transparent: true, opacity: 0.35, depthTest: false }));
+    this.paperEdge.renderOrder = -1;
+    this.paperEdge.visible = false;
+    this.overlayLayer.renderOrder = 10;
+    this.scene.add(this.paper, this.paperEdge, this.overlayLayer);
+
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+    this.listen(canvas);
+  }
+
+  get canvas(): HTMLCanvasElement {
+    return this.renderer.domElement;
+  }
+
+  /** Shows a document (or nothing), fitted to its frame. */
+  setDocument(doc: SvgDocument | null): void {
+    this.doc = doc;
+    this.paper.visible = this.paperEdge.visible = doc !== null;
+    if (doc) {
+      const [x, y, w, h] = doc.frame;
+      for (const o of [this.paper, this.paperEdge]) {
+        o.position.set(x + w / 2, y + h / 2, 0);
+        o.scale.set(w, h, 1);
+      }
+      this.viewport.fit(doc.frame);
+    }
+    this.rebuild();
+    this.viewChanged();
+  }
+
+  /** Rebuilds the drawing from the model (after geometry changed). */
+  rebuild(): void {
+    window.clearTimeout(this.rebuildTimer);
+    if (this.drawing) {
+      this.scene.remove(this.drawing);
+      this.drawing.geometry.dispose();
+      (this.drawing.material as MeshBasicMaterial).dispose();
+      this.drawing = null;
+    }
+    if (this.doc) {
+      // Tessellate finely enough for some zooming in; zooming further rebuilds (see viewChanged).
+      const scale = this.viewport.scale * 2;
+      const { mesh, stats } = buildDrawing(this.doc, Math.max(TOLERANCE_PX / scale, this.doc.size * 1e-7));
+      this.builtScale = scale;
+      this.drawing = mesh;
+      this.scene.add(mesh);
+      this.events.emit('drawing', stats);
+    }
+    this.requestRender();
+  }
+
+  fit(): void {
+    if (!this.doc) return;
+    this.viewport.fit(this.doc.frame);
+    this.viewChanged();
+  }
+
+  /** Zooms by `factor` around a screen point (default: the middle of the view). */
+  zoom(factor: number, sx = this.viewport.width / 2, sy = this.viewport.height / 2): void {
+    this.viewport.zoomAt(factor, sx, sy);
+    this.viewChanged();
+  }
+
+  /** Sets 1 document unit = 1 CSS pixel, around the middle of the view. */
+  actualSize(): void {
+    this.zoom(1 / this.viewport.scale);
+  }
+
+  /** Screen position (canvas CSS pixels) of a document point. */
+  toScreen(x: number, y: number): [number, number] {
+    return this.viewport.toScreen(x, y);
+  }
+
+  requestRender(): void {
+    if (this.frameRequest) return;
+    this.frameRequest = requestAnimationFrame((time) => {
+      this.frameRequest = 0;
+      this.render();
+      this.events.emit('render', time);
+    });
+  }
+
+  /** Draws now (normally use requestRender). */
+  render(): void {
+    const [left, right, top, bottom] = this.viewport.planes();
+    // top < bottom: the camera maps document y downwards, as on screen.
+    Object.assign(this.camera, { left, right, top, bottom });
+    this.camera.updateProjectionMatrix();
+    this.renderer.render(this.scene, this.camera);
+  }
+
+  private viewChanged(): void {
+    this.events.emit('view', this.viewport);
+    this.requestRender();
+    if (this.doc && this.viewport.scale > this.builtScale * 1.5) {
+      window.clearTimeout(this.rebuildTimer);
+      this.rebuildTimer = window.setTimeout(() => this.rebuild(), 250);
+    }
+  }
+
+  private resize(): void {
+    const w = this.container.clientWidth, h = this.container.clientHeight;
+    if (w === 0 || h === 0) return;
+    const first = this.viewport.width <= 1;
+    this.viewport.resize(w, h);
+    this.renderer.setSize(w, h);
+    if (first && this.doc) this.viewport.fit(this.doc.frame);
+    this.viewChanged();
+  }
+
+  private pointer(e: PointerEvent | MouseEvent): ViewPointer {
+    const r = this.canvas.getBoundingClientRect();
+    const sx = e.clientX - r.left, sy = e.clientY - r.top;
+    const [x, y] = this.viewport.toDoc(sx, sy);
+    return { sx, sy, x, y, button: e.button, shiftKey: e.shiftKey, altKey: e.altKey, modKey: e.ctrlKey || e.metaKey };
+  }
+
+  private listen(canvas: HTMLCanvasElement): void {
+    canvas.addEventListener('pointerdown', (e) => {
+      if (this.drag) return;
+      canvas.focus({ preventScroll: true });
+      if (e.button > 1) return; // the right button's context menu stays the browser's
+      const p = this.pointer(e);
+      // Middle button and Space + drag always pan; a left drag pans unless the mode claims it.
+      const pan = e.button === 1 || this.spaceDown || !this.input?.pointerDown(p);
+      this.drag = { id: e.pointerId, sx: p.sx, sy: p.sy, lastX: e.clientX, lastY: e.clientY, pan, moved: false };
+      canvas.setPointerCapture(e.pointerId);
+      if (e.button === 1) e.preventDefault();
+      this.updateCursor();
+    });
+    canvas.addEventListener('pointermove', (e) => {
+      const d = this.drag;
+      if (!d || d.id !== e.pointerId) {
+        if (!d) this.input?.pointerMove?.(this.pointer(e));
+        return;
+      }
+      const p = this.pointer(e);
+      if (!d.moved && Math.hypot(p.sx - d.sx, p.sy - d.sy) > CLICK_SLOP) {
+        d.moved = true;
+        this.updateCursor();
+      }
+      if (d.pan && d.moved) {
+        this.viewport.panBy(e.clientX - d.lastX, e.clientY - d.lastY);
+        this.viewChanged();
+      } else if (!d.pan) {
+        this.input?.pointerMove?.(p);
+      }
+      d.lastX = e.clientX;
+      d.lastY = e.clientY;
+    });
+    const end = (e: PointerEvent, cancelled: boolean) => {
+      const d = this.drag;
+      if (!d || d.id !== e.pointerId) return;
+      this.drag = null;
+      const p = this.pointer(e);
+      if (!d.pan) this.input?.pointerUp?.(p);
+      else if (!d.moved && !cancelled && e.button === 0) this.input?.click(p);
+      this.updateCursor();
+    };
+    canvas.addEventListener('pointerup', (e) => end(e, false));
+    canvas.addEventListener('pointercancel', (e) => end(e, true));
+    canvas.addEventListener('auxclick', (e) => e.preventDefault());
+    canvas.addEventListener(
+      'wheel',
+      (e) => {
+        e.preventDefault();
+        const p = this.pointer(e);
+        const pixels = e.deltaMode === 1 ? e.deltaY * 16 : e.deltaMode === 2 ? e.deltaY * this.viewport.height : e.deltaY;
+        // Pinch gestures arrive as ctrl+wheel with small deltas: make them a little faster.
+        this.zoom(Math.exp(-pixels * (e.ctrlKey ? 0.01 : 0.0015)), p.sx, p.sy);
+      },
+      { passive: false },
+    );
+    const typing = (e: KeyboardEvent) => e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement || e.target instanceof HTMLTextAreaElement;
+    window.addEventListener('keydown', (e) => {
+      if (e.code === 'Space' && !typing(e) && !e.repeat) {
+        this.spaceDown = true;
+        this.updateCursor();
+        if (e.target === document.body || e.target === canvas) e.preventDefault();
+      }
+    });
+    window.addEventListener('keyup', (e) => {
+      if (e.code === 'Space') {
+        this.spaceDown = false;
+        this.updateCursor();
+      }
+    });
+    window.addEventListener('blur', () => {
+      this.spaceDown = false;
+      this.updateCursor();
+    });
+  }
+
+  private updateCursor(): void {
+    const panning = this.drag?.pan && this.drag.moved;
+    this.canvas.style.cursor = panning ? 'grabbing' : this.spaceDown ? 'grab' : '';
+  }
+}
