@@ -22,7 +22,7 @@ build() {
     echo "$out" >&2
     return 1
   fi
-  grep -v '^ninja: no work to do' <<<"$out" || true
+  grep -v -e '^ninja: no work to do' -e 'Re-checking globbed directories' <<<"$out" || true
 }
 
 # ---- System packages (Debian) -----------------------------------------------------------------

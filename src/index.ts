@@ -8,7 +8,7 @@
  * Everything numeric runs in the C++/WebAssembly core; this package wraps it in small typed
  * classes and handles files (SVG in and out).
  */
-export { init, heapBytes } from './core/module.js';
+export { init, memory } from './core/module.js';
 export { SplinekitError, type SplinekitErrorCode } from './core/errors.js';
 export {
   CONTINUITY_KINDS,

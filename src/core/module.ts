@@ -26,7 +26,11 @@ export function core(): SplinekitCoreModule {
   return instance;
 }
 
-/** Bytes currently in the wasm heap (grows, never shrinks): used by leak and allocation checks. */
-export function heapBytes(): number {
-  return core().HEAP8.length;
+/**
+ * Memory of the wasm core: `used` bytes allocated by malloc now (leak and allocation checks
+ * compare it around create/dispose cycles or updates) and the `heap` size (grows, never shrinks).
+ */
+export function memory(): { used: number; heap: number } {
+  const m = core();
+  return { used: m.heapUsed(), heap: m.HEAP8.length };
 }

@@ -39,6 +39,8 @@ export interface SplinekitCoreModule {
   SplineSetHandle: { new (): SplineSetHandle };
   BezierScratch: { new (): BezierScratch };
   gramMatrix(): number[];
+  /** wasm/bindings/core_bindings.cpp: bytes in use by malloc. */
+  heapUsed(): number;
   HEAP8: Int8Array;
 }
 

@@ -149,3 +149,26 @@ describe('SplineSet', () => {
     expect(() => SplineSet.from([nan])).toThrowError(/point 1 has a non-finite coordinate/);
   });
 });
+
+describe('memory', () => {
+  test('1,000 create/query/dispose cycles leave the wasm heap where it was', async () => {
+    const { memory } = await import('../../src/index.js');
+    const splines = [circle(3), circle(1, 4, 4)];
+    const cycle = () => {
+      const set = SplineSet.from(splines);
+      set.classify(10);
+      set.sample(5);
+      set.dispose();
+      Bezier.split(segmentOf(splines[0], 1), 0.5);
+    };
+    cycle(); // first use allocates the shared Bezier scratch
+    const before = memory().used;
+    for (let i = 0; i < 1000; i++) cycle();
+    expect(memory().used).toBe(before);
+    // And a set that is never disposed does show up: the check can fail.
+    const leaked = SplineSet.from(splines);
+    leaked.classify(10);
+    expect(memory().used).toBeGreaterThan(before);
+    leaked.dispose();
+  });
+});

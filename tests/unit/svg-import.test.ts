@@ -286,3 +286,12 @@ describe('export', () => {
     expect(back.shapes[0].style.fill).toBe('blue');
   });
 });
+
+test('parsing releases everything it put in wasm memory', async () => {
+  const { memory } = await import('../../src/index.js');
+  const text = svg('<circle cx="5" cy="5" r="4"/><path d="M0 0 C1 2 3 4 5 6 S9 9 10 0"/>');
+  parseSVG(text);
+  const before = memory().used;
+  for (let i = 0; i < 200; i++) parseSVG(text);
+  expect(memory().used).toBe(before);
+});

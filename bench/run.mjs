@@ -1,0 +1,148 @@
+#!/usr/bin/env node
+// `npm run bench`: speed of the foundation on ../shared/data, as medians after warm-up, printed as
+// a table and written to build/bench/results.json and BENCHMARKS.md (with machine and date).
+// Ratios compare work done in the same run: wasm vs native for the core kernels.
+import { execFileSync } from 'node:child_process';
+import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import { join } from 'node:path';
+import { gzipSync } from 'node:zlib';
+import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
+
+const root = new URL('..', import.meta.url).pathname;
+const data = join(root, '../shared/data');
+mkdirSync(join(root, 'build/bench'), { recursive: true });
+
+function median(xs) {
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.floor(s.length / 2)];
+}
+
+/** Median ms of fn over `repeats` runs after `warmup` runs. */
+function time(fn, repeats, warmup = 3) {
+  for (let i = 0; i < warmup; i++) fn();
+  const t = [];
+  for (let i = 0; i < repeats; i++) {
+    const a = performance.now();
+    fn();
+    t.push(performance.now() - a);
+  }
+  return median(t);
+}
+
+await init();
+
+// ---- import / export of every shared SVG ------------------------------------------------------
+const files = [];
+for (const dir of readdirSync(join(data, 'svg')).sort()) {
+  for (const f of readdirSync(join(data, 'svg', dir)).sort()) if (f.endsWith('.svg')) files.push(`svg/${dir}/${f}`);
+}
+const rows = [];
+for (const rel of files) {
+  const text = readFileSync(join(data, rel), 'utf8');
+  const t0 = performance.now();
+  const doc = parseSVG(text, { name: rel });
+  const cold = performance.now() - t0;
+  const stats = doc.stats();
+  const repeats = stats.segments > 5000 ? 15 : stats.segments > 1000 ? 25 : 50;
+  const importMs = time(() => parseSVG(text, { name: rel }), repeats);
+  const exportMs = time(() => doc.toSVG({ rewrite: 'all' }), repeats);
+  rows.push({ file: rel, kB: text.length / 1024, elements: stats.elements, segments: stats.segments, cold_ms: cold, import_ms: importMs, export_ms: exportMs, segments_per_ms: stats.segments / importMs });
+}
+
+// ---- core kernels: wasm (through SplineSet) vs native, on the largest drawing -----------------
+const bigRel = 'svg/illustrations/oc_road_runner_car.svg';
+const big = parseSVG(readFileSync(join(data, bigRel), 'utf8'));
+const set = SplineSet.from(big.splines);
+const wasm = {
+  bounds_ms: time(() => set.bounds(), 50),
+  classify_ms: time(() => set.classify(big.size), 50),
+  sample16_ms: time(() => set.sample(16), 50),
+};
+set.dispose();
+const points = big.splines.reduce((n, s) => n + s.points.length / 2, 0);
+const header = new Int32Array([big.splines.length, points]);
+const meta = new Int32Array(3 * big.splines.length);
+const coords = new Float64Array(2 * points);
+let at = 0;
+big.splines.forEach((s, i) => {
+  meta[i] = at;
+  meta[big.splines.length + i] = s.points.length / 2;
+  meta[2 * big.splines.length + i] = s.closed ? 1 : 0;
+  coords.set(s.points, 2 * at);
+  at += s.points.length / 2;
+});
+const dump = join(root, 'build/bench/roadrunner-splines.bin');
+writeFileSync(dump, Buffer.concat([Buffer.from(header.buffer), Buffer.from(meta.buffer), Buffer.from(coords.buffer)]));
+const native = JSON.parse(execFileSync(join(root, 'build/native/spline_bench'), [dump, '50'], { encoding: 'utf8' }));
+
+// ---- memory and module size -------------------------------------------------------------------
+const text = readFileSync(join(data, bigRel), 'utf8');
+parseSVG(text);
+const before = memory().used;
+for (let i = 0; i < 20; i++) parseSVG(text);
+const leak = memory().used - before;
+const moduleText = readFileSync(join(root, 'dist/core/splinekit-core.mjs'));
+const wasmBase64 = /data:application\/octet-stream;base64,([A-Za-z0-9+/=]+)/.exec(moduleText.toString())?.[1] ?? '';
+const wasmBytes = Buffer.from(wasmBase64, 'base64');
+const size = {
+  module_kB: moduleText.length / 1024,
+  module_gzip_kB: gzipSync(moduleText).length / 1024,
+  wasm_kB: wasmBytes.length / 1024,
+  wasm_gzip_kB: gzipSync(wasmBytes).length / 1024,
+};
+
+// ---- report -----------------------------------------------------------------------------------
+const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, ${(os.totalmem() / 2 ** 30).toFixed(0)} GiB, Node ${process.version}, ${os.platform()} ${os.release()}`;
+const date = new Date().toISOString().slice(0, 10);
+const results = { date, machine, svg: rows, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
+
+const f = (x, d = 2) => x.toFixed(d);
+const table = [
+  '| file | kB | elements | segments | import ms (cold) | import ms | export ms | segments/ms |',
+  '|---|---:|---:|---:|---:|---:|---:|---:|',
+  ...rows.map((r) => `| ${r.file.replace('svg/', '')} | ${f(r.kB, 1)} | ${r.elements} | ${r.segments} | ${f(r.cold_ms, 1)} | ${f(r.import_ms)} | ${f(r.export_ms)} | ${f(r.segments_per_ms, 0)} |`),
+];
+const kernelTable = [
+  '| kernel (all splines at once) | wasm ms | native ms | wasm / native |',
+  '|---|---:|---:|---:|',
+  ...Object.keys(wasm).map((k) => `| ${k.replace('_ms', '')} | ${f(wasm[k], 3)} | ${f(native[k], 3)} | ${f(wasm[k] / native[k])} |`),
+];
+const bigRow = rows.find((r) => r.file === bigRel);
+const md = `# Benchmarks
+
+Measured by \`npm run bench\` (bench/run.mjs) on ${date}.
+Machine: ${machine}.
+Times are medians over repeated runs after 3 warm-up runs (15–50 runs by file size), wasm in Node;
+"cold" is the first import in the process (JIT not warmed). Raw numbers: build/bench/results.json.
+
+## SVG import and export (every file in ../shared/data/svg)
+
+Import = parseSVG: XML parse, path data, transforms, styles, splines, bounds and continuity in wasm.
+Export = toSVG({ rewrite: 'all' }): every shape written back as a path.
+
+${table.join('\n')}
+
+Budget: the largest file (${bigRel.replace('svg/', '')}, ${bigRow.segments} segments) imports in
+≤ 300 ms: **${f(bigRow.import_ms, 1)} ms** warm, ${f(bigRow.cold_ms, 1)} ms cold.
+
+## Core kernels, wasm vs native (same splines: ${big.splines.length} splines, ${big.stats().segments} segments of ${bigRel.replace('svg/', '')})
+
+The wasm column goes through the TS wrapper (SplineSet: validation and copy of the result out of
+wasm memory included); native calls the same C++ functions directly (bench/native/spline_bench.cpp).
+
+${kernelTable.join('\n')}
+
+## Memory and size
+
+- malloc'd bytes in the wasm heap after 20 more imports of ${bigRel.replace('svg/', '')}: **${leak}** more than before (0 = nothing leaked).
+- Module (dist/core/splinekit-core.mjs, wasm inlined as base64): ${f(size.module_kB, 1)} kB, ${f(size.module_gzip_kB, 1)} kB gzipped;
+  the wasm itself: ${f(size.wasm_kB, 1)} kB, ${f(size.wasm_gzip_kB, 1)} kB gzipped (budget 1.5 MB / 500 kB).
+`;
+writeFileSync(join(root, 'BENCHMARKS.md'), md);
+console.log(table.join('\n'));
+console.log();
+console.log(kernelTable.join('\n'));
+console.log(`\nleak after 20 imports: ${leak} bytes; module ${f(size.module_kB, 1)} kB (${f(size.module_gzip_kB, 1)} kB gz), wasm ${f(size.wasm_kB, 1)} kB (${f(size.wasm_gzip_kB, 1)} kB gz)`);
+console.log('wrote BENCHMARKS.md and build/bench/results.json');
