@@ -29,6 +29,12 @@ export interface Mode {
   deactivate(): void;
   /** A pointer went down on the view; return true to own the gesture (otherwise it pans). */
   pointerDown?(p: ViewPointer): boolean;
+  /** The pointer moved over the view (hover, or a drag the mode owns). */
+  pointerMove?(p: ViewPointer): void;
+  /** The pointer of a gesture the mode owns went up. */
+  pointerUp?(p: ViewPointer): void;
+  /** The pointer left the view. */
+  pointerLeave?(): void;
   /** A click (down and up without dragging) on the view that no gesture claimed. */
   click?(p: ViewPointer): void;
   /** A key the editor did not use itself; return true when handled. */

@@ -8,7 +8,8 @@ import {
   ShaderMaterial,
   type Material,
 } from 'three';
-import { junctionCount, type SvgDocument } from '../../src/index.js';
+import type { SvgDocument } from '../../src/index.js';
+import { anchorJunction } from '../app/junctions.js';
 import type { AnchorSelection } from '../app/state.js';
 import type { View2D } from '../view2d/view2d.js';
 import { CONTINUITY_COLORS, END_COLOR, HANDLE_COLOR, HANDLE_LINE_COLOR, OUTLINE_COLOR, SELECTION_COLOR, hexToRGB } from './colors.js';
@@ -17,6 +18,8 @@ import { CONTINUITY_COLORS, END_COLOR, HANDLE_COLOR, HANDLE_LINE_COLOR, OUTLINE_
 const enum Marker {
   Square = 0,
   Circle = 1,
+  /** A hollow square frame: shows the marker under it. */
+  Ring = 2,
 }
 
 /** Point sprites of constant screen size with a dark outline, colored per point. */
@@ -43,11 +46,15 @@ function markerMaterial(marker: Marker, sizePx: number, pixelRatio: number): Sha
       varying vec3 vTint;
       void main() {
         vec2 c = gl_PointCoord * 2.0 - 1.0;
-        float d = ${marker === Marker.Square ? 'max(abs(c.x), abs(c.y))' : 'length(c)'};
+        float d = ${marker === Marker.Circle ? 'length(c)' : 'max(abs(c.x), abs(c.y))'};
         if (d > 1.0) discard;
         float edge = 1.0 - 2.0 * uBorder / uSize;
-        gl_FragColor = vec4(d > edge ? uOutline : vTint, 1.0);
+        bool outline = d > edge;
+        ${marker === Marker.Ring ? 'if (d < 0.62 - 2.0 * uBorder / uSize) discard; outline = outline || d < 0.62;' : ''}
+        gl_FragColor = vec4(outline ? uOutline : vTint, 1.0);
       }`,
+    // Transparent like the drawing, so both sort by render order (opaque objects draw first).
+    transparent: true,
     depthTest: false,
     depthWrite: false,
   });
@@ -55,22 +62,25 @@ function markerMaterial(marker: Marker, sizePx: number, pixelRatio: number): Sha
 
 const ANCHOR_PX = 8;
 const HANDLE_PX = 6;
-const SELECTED_PX = 13;
+const SELECTED_PX = 17;
 /** How far from an anchor (in screen pixels) a click still picks it. */
 const PICK_PX = 8;
 
 /**
  * The control-point overlay: anchors as squares colored by their continuity tag (ends of open
- * splines in white), handles as dots joined to their anchors, the selected anchor enlarged.
+ * splines in white), handles as dots joined to their anchors, the selected anchor framed in a
+ * ring and the one under the pointer enlarged.
  * Everything keeps its screen size at any zoom.
  */
 export class ControlOverlay {
   readonly group = new Group();
   private doc: SvgDocument | null = null;
+  private hover: AnchorSelection | null = null;
   /** Per anchor: its spline and point index (for picking and recoloring). */
   private anchorSpline = new Int32Array(0);
   private anchorPoint = new Int32Array(0);
   private anchorXY = new Float64Array(0);
+  private handleCount = 0;
   private readonly anchors: Points;
   private readonly handles: Points;
   private readonly lines: LineSegments;
@@ -83,7 +93,7 @@ export class ControlOverlay {
     this.handles = new Points(new BufferGeometry(), markerMaterial(Marker.Circle, HANDLE_PX, ratio));
     this.anchors = new Points(new BufferGeometry(), markerMaterial(Marker.Square, ANCHOR_PX, ratio));
     this.hovered = new Points(new BufferGeometry(), markerMaterial(Marker.Square, ANCHOR_PX + 3, ratio));
-    this.selected = new Points(new BufferGeometry(), markerMaterial(Marker.Square, SELECTED_PX, ratio));
+    this.selected = new Points(new BufferGeometry(), markerMaterial(Marker.Ring, SELECTED_PX, ratio));
     [this.lines, this.handles, this.anchors, this.hovered, this.selected].forEach((o, i) => {
       o.frustumCulled = false;
       o.renderOrder = 100 + i;
@@ -103,7 +113,7 @@ export class ControlOverlay {
 
   /** Number of anchors and handles drawn. */
   get counts(): { anchors: number; handles: number } {
-    return { anchors: this.anchorPoint.length, handles: (this.handles.geometry.getAttribute('position')?.count as number | undefined) ?? 0 };
+    return { anchors: this.anchorPoint.length, handles: this.handleCount };
   }
 
   setDocument(doc: SvgDocument | null): void {
@@ -135,6 +145,7 @@ export class ControlOverlay {
     }
     this.setPositions(this.anchors, anchorXYZ);
     this.anchors.geometry.setAttribute('tint', new Float32BufferAttribute(new Float32Array(spl.length * 3), 3));
+    this.handleCount = handleXYZ.length / 3;
     this.setPositions(this.handles, new Float32Array(handleXYZ));
     const handleTint = new Float32Array(handleXYZ.length);
     for (let i = 0; i < handleTint.length; i += 3) handleTint.set(hexToRGB(HANDLE_COLOR), i);
@@ -158,7 +169,7 @@ export class ControlOverlay {
       colors.set(kind ? byKind[kind] : end, 3 * i);
     }
     tint.needsUpdate = true;
-    this.view.requestRender();
+    this.setHover(this.hover);
   }
 
   setSelection(sel: AnchorSelection | null): void {
@@ -166,6 +177,7 @@ export class ControlOverlay {
   }
 
   setHover(sel: AnchorSelection | null): void {
+    this.hover = sel;
     const kind = sel ? this.kindAt(sel.spline, sel.anchor) : null;
     this.mark(this.hovered, sel, hexToRGB(kind ? CONTINUITY_COLORS[kind] : END_COLOR));
   }
@@ -191,9 +203,8 @@ export class ControlOverlay {
   /** The continuity kind at an anchor, or null for the end of an open spline. */
   private kindAt(spline: number, anchor: number) {
     const s = this.doc?.splines[spline];
-    if (!s) return null;
-    const j = s.closed ? anchor / 3 : anchor / 3 - 1;
-    return j >= 0 && j < junctionCount(s) ? s.continuity[j].kind : null;
+    const j = s ? anchorJunction(s, anchor) : -1;
+    return j < 0 ? null : s!.continuity[j].kind;
   }
 
   private mark(points: Points, sel: AnchorSelection | null, rgb: [number, number, number]): void {

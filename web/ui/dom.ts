@@ -37,6 +37,15 @@ export const ICONS = {
   redo: 'M10.5 4l3 3-3 3M13.5 7H6a3.5 3.5 0 0 0 0 7h3',
   fit: 'M2 5.5V2h3.5M10.5 2H14v3.5M14 10.5V14h-3.5M5.5 14H2v-3.5',
   overlay: 'M3 13 7 5l6 8M1.5 11.5h3v3h-3zM5.5 3.5h3v3h-3zM11.5 11.5h3v3h-3z',
-  zoomIn: 'M7 3v8M3 7h8M10 10l4 4',
-  zoomOut: 'M3 7h8M10 10l4 4',
+  zoomIn: 'M6.5 2.5a4 4 0 1 0 0 8a4 4 0 1 0 0-8M6.5 4.5v4M4.5 6.5h4M9.5 9.5 14 14',
+  zoomOut: 'M6.5 2.5a4 4 0 1 0 0 8a4 4 0 1 0 0-8M4.5 6.5h4M9.5 9.5 14 14',
 };
+
+/**
+ * Keeps a pointer click on a control from taking the keyboard focus (keys such as Space or F
+ * then keep going to the canvas instead of re-pressing the button); Tab still reaches it.
+ */
+export function noFocusOnClick<T extends HTMLElement>(el: T): T {
+  el.addEventListener('mousedown', (e) => e.preventDefault());
+  return el;
+}

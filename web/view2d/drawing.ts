@@ -103,7 +103,9 @@ export function buildDrawing(doc: SvgDocument, tolerance: number): { mesh: Mesh;
       for (const line of lines) {
         if (line.length < 2) continue;
         stroke.length = 0;
-        const count = SVGLoader.pointsToStrokeWithBuffers(line, pen, 6, tolerance * 0.01, stroke, undefined, undefined, 0);
+        SVGLoader.pointsToStrokeWithBuffers(line, pen, 6, tolerance * 0.01, stroke, undefined, undefined, 0);
+        // Count what was written: three r187 returns the number of coordinates, not vertices.
+        const count = stroke.length / 3;
         const base = buffers.vertexCount;
         buffers.addVertices(stroke, count, rgba);
         for (let v = 0; v < count; v++) buffers.indices.push(base + v);

@@ -1,6 +1,7 @@
 import {
   BufferGeometry,
   Color,
+  DoubleSide,
   Float32BufferAttribute,
   Group,
   LineBasicMaterial,
@@ -35,6 +36,7 @@ export interface ViewInput {
   pointerDown(p: ViewPointer): boolean;
   pointerMove?(p: ViewPointer): void;
   pointerUp?(p: ViewPointer): void;
+  pointerLeave?(): void;
   click(p: ViewPointer): void;
 }
 
@@ -51,6 +53,8 @@ const BACKGROUND = 0x1b1d21;
 const PAPER = 0xffffff;
 /** Tessellation tolerance in screen pixels. */
 const TOLERANCE_PX = 0.2;
+/** Finest tessellation tolerance, relative to the drawing's size (its diagonal). */
+const MIN_TOLERANCE = 2e-5;
 /** Pixels the pointer may travel and still make a click. */
 const CLICK_SLOP = 4;
 
@@ -89,7 +93,7 @@ export class View2D {
     canvas.setAttribute('aria-label', 'Drawing');
     container.appendChild(canvas);
 
-    this.paper = new Mesh(new PlaneGeometry(1, 1), new MeshBasicMaterial({ color: PAPER, depthTest: false, depthWrite: false }));
+    this.paper = new Mesh(new PlaneGeometry(1, 1), new MeshBasicMaterial({ color: PAPER, side: DoubleSide, depthTest: false, depthWrite: false }));
     this.paper.renderOrder = -2;
     this.paper.visible = false;
     const edge = new BufferGeometry();
@@ -135,9 +139,10 @@ export class View2D {
       this.drawing = null;
     }
     if (this.doc) {
-      // Tessellate finely enough for some zooming in; zooming further rebuilds (see viewChanged).
+      // Tessellate finely enough for some zooming in; zooming further rebuilds (see viewChanged),
+      // down to a floor relative to the drawing so deep zooms into large files stay affordable.
       const scale = this.viewport.scale * 2;
-      const { mesh, stats } = buildDrawing(this.doc, Math.max(TOLERANCE_PX / scale, this.doc.size * 1e-7));
+      const { mesh, stats } = buildDrawing(this.doc, Math.max(TOLERANCE_PX / scale, this.doc.size * MIN_TOLERANCE));
       this.builtScale = scale;
       this.drawing = mesh;
       this.scene.add(mesh);
@@ -158,9 +163,19 @@ export class View2D {
     this.viewChanged();
   }
 
-  /** Sets 1 document unit = 1 CSS pixel, around the middle of the view. */
+  /** Screen pixels per document unit at 100% (the document's width over its frame's width). */
+  get naturalScale(): number {
+    return this.doc ? this.doc.width / this.doc.frame[2] : 1;
+  }
+
+  /** Zoom relative to the document's natural size (1 = 100%). */
+  get zoomLevel(): number {
+    return this.viewport.scale / this.naturalScale;
+  }
+
+  /** Shows the document at its natural size (100%), around the middle of the view. */
   actualSize(): void {
-    this.zoom(1 / this.viewport.scale);
+    this.zoom(this.naturalScale / this.viewport.scale);
   }
 
   /** Screen position (canvas CSS pixels) of a document point. */
@@ -177,6 +192,17 @@ export class View2D {
     });
   }
 
+  /** Resolves once the next frame has been drawn. */
+  nextFrame(): Promise<void> {
+    return new Promise((resolve) => {
+      const off = this.events.on('render', () => {
+        off();
+        resolve();
+      });
+      this.requestRender();
+    });
+  }
+
   /** Draws now (normally use requestRender). */
   render(): void {
     const [left, right, top, bottom] = this.viewport.planes();
@@ -189,7 +215,8 @@ export class View2D {
   private viewChanged(): void {
     this.events.emit('view', this.viewport);
     this.requestRender();
-    if (this.doc && this.viewport.scale > this.builtScale * 1.5) {
+    const finest = this.doc ? TOLERANCE_PX / (this.doc.size * MIN_TOLERANCE) : 0;
+    if (this.doc && this.viewport.scale > this.builtScale * 1.5 && this.builtScale < finest) {
       window.clearTimeout(this.rebuildTimer);
       this.rebuildTimer = window.setTimeout(() => this.rebuild(), 250);
     }
@@ -254,6 +281,9 @@ export class View2D {
       else if (!d.moved && !cancelled && e.button === 0) this.input?.click(p);
       this.updateCursor();
     };
+    canvas.addEventListener('pointerleave', () => {
+      if (!this.drag) this.input?.pointerLeave?.();
+    });
     canvas.addEventListener('pointerup', (e) => end(e, false));
     canvas.addEventListener('pointercancel', (e) => end(e, true));
     canvas.addEventListener('auxclick', (e) => e.preventDefault());

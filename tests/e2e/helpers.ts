@@ -1,0 +1,190 @@
+import { expect, type Page } from '@playwright/test';
+import type {} from '../../web/app/test-hook.js'; // window.splinekitEditor's type
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+
+/** A file of the shared test data (../shared/data beside the repository). */
+export function sharedData(relative: string): string {
+  return fileURLToPath(new URL(`../../../shared/data/${relative}`, import.meta.url));
+}
+
+/** A file of the app's public/ folder. */
+export function publicFile(relative: string): string {
+  return fileURLToPath(new URL(`../../public/${relative}`, import.meta.url));
+}
+
+export type EditorState = {
+  file: string | null;
+  elements: number;
+  splines: number;
+  segments: number;
+  overlay: boolean;
+  anchors: number;
+  error: string | null;
+  importMs: number | null;
+  selection: { spline: number; anchor: number; kind: string | null } | null;
+  canUndo: boolean;
+  canRedo: boolean;
+};
+
+/** Console errors and uncaught page errors, collected from the moment the page is created. */
+export function collectErrors(page: Page): string[] {
+  const errors: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(`console.error: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
+  return errors;
+}
+
+/** Opens the editor and waits until its starting sample is drawn. */
+export async function openEditor(page: Page): Promise<void> {
+  await page.goto('/');
+  await page.waitForFunction(() => window.splinekitEditor !== undefined);
+  await page.evaluate(() => window.splinekitEditor!.ready);
+}
+
+export function editorState(page: Page): Promise<EditorState> {
+  return page.evaluate(() => window.splinekitEditor!.state());
+}
+
+/** Waits until two frames have been presented (rendering is on demand). */
+export async function frames(page: Page): Promise<void> {
+  await page.evaluate(() => new Promise<void>((r) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(r, 0)))));
+}
+
+/** Waits for the editor to show `file` (or an error), then for it to be drawn. */
+export async function waitForFile(page: Page, file: string): Promise<EditorState> {
+  await page.waitForFunction((f) => window.splinekitEditor!.state().file === f, file);
+  await frames(page);
+  return editorState(page);
+}
+
+function hexToRGB(hex: string): [number, number, number] {
+  const n = parseInt(hex.replace('#', ''), 16);
+  return [(n >> 16) & 255, (n >> 8) & 255, n & 255];
+}
+
+/**
+ * Reads the canvas back (the renderer keeps its drawing buffer) and counts, for each color, the
+ * pixels within `tolerance` of it on every channel.
+ */
+export async function countColors(page: Page, colors: string[], tolerance = 6): Promise<number[]> {
+  return page.evaluate(
+    ({ targets, tolerance }) => {
+      const canvas = document.querySelector<HTMLCanvasElement>('canvas.view2d-canvas')!;
+      const copy = document.createElement('canvas');
+      copy.width = canvas.width;
+      copy.height = canvas.height;
+      const ctx = copy.getContext('2d', { willReadFrequently: true })!;
+      ctx.drawImage(canvas, 0, 0);
+      const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+      const counts = targets.map(() => 0);
+      for (let i = 0; i < data.length; i += 4) {
+        for (let t = 0; t < targets.length; t++) {
+          const [r, g, b] = targets[t];
+          if (Math.abs(data[i] - r) <= tolerance && Math.abs(data[i + 1] - g) <= tolerance && Math.abs(data[i + 2] - b) <= tolerance) counts[t]++;
+        }
+      }
+      return counts;
+    },
+    { targets: colors.map(hexToRGB), tolerance },
+  );
+}
+
+/** The color of the canvas pixel at client coordinates (x, y), as '#rrggbb'. */
+export async function pixelAt(page: Page, x: number, y: number): Promise<string> {
+  return page.evaluate(
+    ({ x, y }) => {
+      const canvas = document.querySelector<HTMLCanvasElement>('canvas.view2d-canvas')!;
+      const r = canvas.getBoundingClientRect();
+      const sx = Math.round(((x - r.left) * canvas.width) / r.width), sy = Math.round(((y - r.top) * canvas.height) / r.height);
+      const copy = document.createElement('canvas');
+      copy.width = copy.height = 1;
+      const ctx = copy.getContext('2d')!;
+      ctx.drawImage(canvas, sx, sy, 1, 1, 0, 0, 1, 1);
+      const [red, g, b] = ctx.getImageData(0, 0, 1, 1).data;
+      return `#${((1 << 24) | (red << 16) | (g << 8) | b).toString(16).slice(1)}`;
+    },
+    { x, y },
+  );
+}
+
+/** A coarse fingerprint of the canvas: mean color of each cell of a 32 × 20 grid. */
+export async function fingerprint(page: Page): Promise<number[]> {
+  return page.evaluate(() => {
+    const canvas = document.querySelector<HTMLCanvasElement>('canvas.view2d-canvas')!;
+    const copy = document.createElement('canvas');
+    copy.width = 32;
+    copy.height = 20;
+    const ctx = copy.getContext('2d')!;
+    ctx.imageSmoothingQuality = 'high';
+    ctx.drawImage(canvas, 0, 0, 32, 20);
+    return Array.from(ctx.getImageData(0, 0, 32, 20).data);
+  });
+}
+
+export function expectSameFingerprint(a: number[], b: number[]): void {
+  expect(a.length).toBe(b.length);
+  let worst = 0;
+  for (let i = 0; i < a.length; i++) worst = Math.max(worst, Math.abs(a[i] - b[i]));
+  expect(worst, 'largest channel difference between the two canvases').toBeLessThanOrEqual(2);
+}
+
+export function fingerprintDistance(a: number[], b: number[]): number {
+  let sum = 0;
+  for (let i = 0; i < a.length; i++) sum += Math.abs(a[i] - b[i]);
+  return sum / a.length;
+}
+
+/** Fill colors (#rrggbb, lower case) used in an SVG file's markup. */
+export function colorsInFile(path: string): Set<string> {
+  const text = readFileSync(path, 'utf8');
+  return new Set(Array.from(text.matchAll(/#[0-9a-fA-F]{6}\b/g), (m) => m[0].toLowerCase()));
+}
+
+/**
+ * Counts an SVG's `<path>` elements and their segments from the path data alone — an independent
+ * reference for files made of paths (like oc_dog.svg): one segment per drawing command, plus one
+ * for a closepath that does not end where the subpath started.
+ */
+export function referenceCounts(path: string): { elements: number; segments: number } {
+  const text = readFileSync(path, 'utf8');
+  const arity: Record<string, number> = { m: 2, l: 2, h: 1, v: 1, c: 6, s: 4, q: 4, t: 2, a: 7, z: 0 };
+  let elements = 0, segments = 0;
+  for (const m of text.matchAll(/<path\b[^>]*?\sd="([^"]*)"/g)) {
+    elements++;
+    const tokens = m[1].match(/[MmLlHhVvCcSsQqTtAaZz]|[-+]?(?:\d*\.\d+|\d+\.?)(?:[eE][-+]?\d+)?/g) ?? [];
+    let x = 0, y = 0, sx = 0, sy = 0, command = '', args: number[] = [];
+    const run = () => {
+      if (!command) return;
+      const k = command.toLowerCase(), relative = command === k;
+      if (k === 'z') {
+        if (Math.abs(x - sx) > 1e-9 || Math.abs(y - sy) > 1e-9) segments++;
+        x = sx;
+        y = sy;
+        return;
+      }
+      const n = arity[k];
+      for (let i = 0; i + n <= args.length; i += n) {
+        const g = args.slice(i, i + n);
+        let nx: number, ny: number;
+        if (k === 'h') [nx, ny] = [relative ? x + g[0] : g[0], y];
+        else if (k === 'v') [nx, ny] = [x, relative ? y + g[0] : g[0]];
+        else [nx, ny] = relative ? [x + g[n - 2], y + g[n - 1]] : [g[n - 2], g[n - 1]];
+        if (k === 'm' && i === 0) [sx, sy] = [nx, ny];
+        else segments++;
+        [x, y] = [nx, ny];
+      }
+    };
+    for (const t of tokens) {
+      if (/[a-z]/i.test(t)) {
+        run();
+        command = t;
+        args = [];
+      } else args.push(Number(t));
+    }
+    run();
+  }
+  return { elements, segments };
+}

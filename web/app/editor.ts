@@ -1,0 +1,239 @@
+import type { SvgDocument } from '../../src/index.js';
+import { DocumentMode } from '../modes/document-mode.js';
+import { ControlOverlay } from '../overlay/overlay.js';
+import { h } from '../ui/dom.js';
+import { SidePanel } from '../ui/panel.js';
+import { StatusBar } from '../ui/statusbar.js';
+import { Toolbar, type Sample } from '../ui/toolbar.js';
+import { View2D, type ViewPointer } from '../view2d/view2d.js';
+import { OpenDocumentCommand } from './commands.js';
+import { History } from './history.js';
+import { fetchBytes, importSVG, readFile } from './loader.js';
+import { ModeRegistry, type ModeContext } from './modes.js';
+import { EditorState, type LoadedDocument } from './state.js';
+
+/** Lets the browser paint (e.g. a "loading" message) before a long synchronous step. */
+function nextPaint(): Promise<void> {
+  return new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
+}
+
+/**
+ * The editor: owns the state, the undo history, the view with its overlay, the modes and the
+ * UI around them, and wires them together. Everything the user does ends up here.
+ */
+export class Editor {
+  readonly state = new EditorState();
+  readonly history = new History();
+  readonly view: View2D;
+  readonly overlay: ControlOverlay;
+  readonly modes: ModeRegistry;
+  readonly toolbar: Toolbar;
+  readonly status: StatusBar;
+  readonly panel = new SidePanel();
+  samples: Sample[] = [];
+
+  constructor(root: HTMLElement) {
+    this.toolbar = new Toolbar({
+      activateMode: (id) => this.modes.activate(id),
+      openFile: (file) => void this.openFile(file),
+      openSample: (sample) => void this.openSample(sample),
+      exportSVG: () => this.exportSVG(),
+      undo: () => this.undo(),
+      redo: () => this.redo(),
+      fit: () => this.view.fit(),
+      zoom: (f) => this.view.zoom(f),
+      toggleOverlay: () => this.state.setOverlay(!this.state.overlay),
+    });
+    this.status = new StatusBar(() => this.state.setError(null));
+    const stage = h('main', { class: 'stage' });
+    const dropHint = h('div', { class: 'drop-hint', 'aria-hidden': 'true' }, h('div', {}, 'Drop an SVG file to open it'));
+    root.append(this.toolbar.el, h('div', { class: 'workspace' }, stage, this.panel.el), this.status.el, dropHint);
+
+    this.view = new View2D(stage);
+    this.overlay = new ControlOverlay(this.view);
+    const context = (): ModeContext => ({ state: this.state, history: this.history, view: this.view, overlay: this.overlay, panel: this.panel.body });
+    this.modes = new ModeRegistry(context);
+    this.modes.register(new DocumentMode());
+
+    this.wire();
+    this.listenKeys();
+    this.listenDrops(dropHint);
+    this.modes.activate('document');
+    this.status.setDocument(null);
+  }
+
+  get doc(): SvgDocument | null {
+    return this.state.doc;
+  }
+
+  /** Opens bytes as a document: undoable, or as the starting document (no history entry). */
+  async openBytes(bytes: Uint8Array, name: string, options: { undoable: boolean }): Promise<boolean> {
+    this.state.setBusy(`Opening ${name}…`);
+    try {
+      await nextPaint();
+      const loaded = importSVG(bytes, name);
+      this.show(loaded, options.undoable);
+      return true;
+    } catch (err) {
+      this.state.setError(err instanceof Error ? err.message : String(err));
+      return false;
+    } finally {
+      this.state.setBusy(null);
+    }
+  }
+
+  async openFile(file: File): Promise<boolean> {
+    let bytes: Uint8Array;
+    try {
+      bytes = await readFile(file);
+    } catch (err) {
+      this.state.setError(err instanceof Error ? err.message : String(err));
+      return false;
+    }
+    return this.openBytes(bytes, file.name, { undoable: true });
+  }
+
+  async openSample(sample: Sample, options = { undoable: true }): Promise<boolean> {
+    try {
+      const bytes = await fetchBytes(`samples/${sample.file}`, sample.file);
+      return await this.openBytes(bytes, sample.file, options);
+    } catch (err) {
+      this.state.setError(err instanceof Error ? err.message : String(err));
+      this.toolbar.setSample(this.state.current?.file ?? '');
+      return false;
+    }
+  }
+
+  /** Loads the sample list (public/samples/index.json). */
+  async loadSamples(): Promise<Sample[]> {
+    const bytes = await fetchBytes('samples/index.json', 'samples/index.json');
+    const list = JSON.parse(new TextDecoder().decode(bytes)) as { samples: Sample[] };
+    this.samples = list.samples;
+    this.toolbar.setSamples(this.samples);
+    return this.samples;
+  }
+
+  undo(): void {
+    this.history.undo();
+  }
+
+  redo(): void {
+    this.history.redo();
+  }
+
+  /** Downloads the document as SVG (shapes whose geometry changed are written back). */
+  exportSVG(): void {
+    const current = this.state.current;
+    if (!current) return;
+    const blob = new Blob([current.doc.toSVG()], { type: 'image/svg+xml' });
+    const url = URL.createObjectURL(blob);
+    const a = h('a', { href: url, download: current.file.replace(/(\.svg)?$/i, '.svg') });
+    document.body.append(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 1000);
+  }
+
+  private show(loaded: LoadedDocument, undoable: boolean): void {
+    this.state.setError(null);
+    if (undoable) this.history.execute(new OpenDocumentCommand(this.state, loaded));
+    else this.state.setDocument(loaded);
+  }
+
+  private wire(): void {
+    const { state, view, overlay, toolbar, status } = this;
+    state.events.on('document', (current) => {
+      view.setDocument(current?.doc ?? null);
+      overlay.setDocument(current?.doc ?? null);
+      status.setDocument(current);
+      toolbar.setHasDocument(current !== null);
+      toolbar.setSample(current?.file ?? '');
+      document.title = current ? `${current.file} — splinekit` : 'splinekit editor';
+    });
+    state.events.on('continuity', () => {
+      overlay.recolor();
+      status.setDocument(state.current);
+    });
+    state.events.on('selection', (sel) => overlay.setSelection(sel));
+    state.events.on('overlay', (on) => {
+      overlay.visible = on;
+      toolbar.setOverlay(on);
+      if (!on) overlay.setHover(null);
+    });
+    state.events.on('error', (message) => status.setError(message));
+    state.events.on('busy', (what) => {
+      status.setMessage(what);
+      document.body.classList.toggle('busy', what !== null);
+    });
+    this.history.events.on('change', (history) => toolbar.setHistory(history));
+    toolbar.setHistory(this.history);
+    toolbar.setHasDocument(false);
+    overlay.visible = state.overlay;
+    toolbar.setOverlay(state.overlay);
+    view.events.on('view', () => toolbar.setZoom(view.zoomLevel));
+    this.modes.events.on('change', (mode) => {
+      toolbar.setModes(this.modes.list, mode);
+      this.panel.setHeading(mode.title, mode.description);
+    });
+
+    // Pointer input goes to the active mode; whatever it does not claim pans the view.
+    const mode = () => this.modes.active;
+    view.input = {
+      pointerDown: (p: ViewPointer) => mode()?.pointerDown?.(p) ?? false,
+      pointerMove: (p: ViewPointer) => mode()?.pointerMove?.(p),
+      pointerUp: (p: ViewPointer) => mode()?.pointerUp?.(p),
+      pointerLeave: () => mode()?.pointerLeave?.(),
+      click: (p: ViewPointer) => mode()?.click?.(p),
+    };
+  }
+
+  private listenKeys(): void {
+    window.addEventListener('keydown', (e) => {
+      const target = e.target;
+      if (target instanceof HTMLInputElement || target instanceof HTMLTextAreaElement) return;
+      const mod = e.ctrlKey || e.metaKey;
+      const key = e.key.toLowerCase();
+      let handled = true;
+      if (mod && key === 'z' && !e.shiftKey) this.undo();
+      else if (mod && ((key === 'z' && e.shiftKey) || key === 'y')) this.redo();
+      else if (mod && key === 'o') this.toolbar.fileInput.click();
+      else if (mod && key === 's') this.exportSVG();
+      else if (mod || e.altKey || target instanceof HTMLSelectElement) handled = false;
+      else if (key === 'f') this.view.fit();
+      else if (key === 'h') this.state.setOverlay(!this.state.overlay);
+      else if (key === '+' || key === '=') this.view.zoom(1.5);
+      else if (key === '-' || key === '_') this.view.zoom(1 / 1.5);
+      else if (key === '1') this.view.actualSize();
+      else handled = this.modes.active?.keyDown?.(e) ?? false;
+      if (handled) e.preventDefault();
+    });
+  }
+
+  private listenDrops(hint: HTMLElement): void {
+    let depth = 0;
+    const hasFiles = (e: DragEvent) => e.dataTransfer?.types.includes('Files') ?? false;
+    window.addEventListener('dragenter', (e) => {
+      if (!hasFiles(e)) return;
+      depth++;
+      hint.classList.add('visible');
+    });
+    window.addEventListener('dragleave', (e) => {
+      if (!hasFiles(e)) return;
+      depth = Math.max(0, depth - 1);
+      if (depth === 0) hint.classList.remove('visible');
+    });
+    window.addEventListener('dragover', (e) => {
+      if (!hasFiles(e)) return;
+      e.preventDefault();
+      if (e.dataTransfer) e.dataTransfer.dropEffect = 'copy';
+    });
+    window.addEventListener('drop', (e) => {
+      depth = 0;
+      hint.classList.remove('visible');
+      if (!hasFiles(e)) return;
+      e.preventDefault();
+      const file = e.dataTransfer?.files[0];
+      if (file) void this.openFile(file);
+    });
+  }
+}

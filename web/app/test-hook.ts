@@ -1,0 +1,70 @@
+import type { ContinuityKind } from '../../src/index.js';
+import type { Editor } from './editor.js';
+import { anchorJunction } from './junctions.js';
+
+/** A read-only window into the editor for end-to-end tests (window.splinekitEditor). */
+export interface EditorTestHook {
+  /** Resolves when the starting sample is drawn (or its loading failed and says so). */
+  ready: Promise<void>;
+  state(): {
+    file: string | null;
+    elements: number;
+    splines: number;
+    segments: number;
+    overlay: boolean;
+    /** Anchors the overlay draws. */
+    anchors: number;
+    error: string | null;
+    importMs: number | null;
+    selection: { spline: number; anchor: number; kind: ContinuityKind | null } | null;
+    canUndo: boolean;
+    canRedo: boolean;
+  };
+  /** Where an anchor is on screen (client pixels), to click it like a user would. */
+  anchorOnScreen(spline: number, anchor: number): { x: number; y: number } | null;
+}
+
+declare global {
+  interface Window {
+    splinekitEditor?: EditorTestHook;
+  }
+}
+
+export function installTestHook(editor: Editor, ready: Promise<void>): void {
+  const hook: EditorTestHook = {
+    ready,
+    state() {
+      const { state, history, overlay } = editor;
+      const current = state.current;
+      const stats = current?.doc.stats();
+      const sel = state.selection;
+      let kind: ContinuityKind | null = null;
+      if (sel && current) {
+        const s = current.doc.splines[sel.spline];
+        const j = anchorJunction(s, sel.anchor);
+        kind = j < 0 ? null : s.continuity[j].kind;
+      }
+      return {
+        file: current?.file ?? null,
+        elements: stats?.elements ?? 0,
+        splines: stats?.splines ?? 0,
+        segments: stats?.segments ?? 0,
+        overlay: state.overlay && overlay.visible,
+        anchors: overlay.counts.anchors,
+        error: state.error,
+        importMs: current?.importMs ?? null,
+        selection: sel ? { ...sel, kind } : null,
+        canUndo: history.canUndo,
+        canRedo: history.canRedo,
+      };
+    },
+    anchorOnScreen(spline, anchor) {
+      const p = editor.doc?.splines[spline]?.points;
+      if (!p || 2 * anchor + 1 >= p.length) return null;
+      const [sx, sy] = editor.view.toScreen(p[2 * anchor], p[2 * anchor + 1]);
+      const r = editor.view.canvas.getBoundingClientRect();
+      return { x: r.left + sx, y: r.top + sy };
+    },
+  };
+  window.splinekitEditor = Object.freeze(hook);
+}
