@@ -12,6 +12,7 @@ export { init, memory } from './core/module.js';
 export { SplinekitError, type SplinekitErrorCode } from './core/errors.js';
 export {
   CONTINUITY_KINDS,
+  anchorJunction,
   cloneSpline,
   junctionAnchor,
   junctionCount,
@@ -25,6 +26,7 @@ export { SplineSet, DEFAULT_CONTINUITY, type ContinuityOptions } from './spline/
 export { Bezier } from './spline/bezier.js';
 export { parseSVG, DEFAULT_MAX_BYTES, type ParseOptions } from './svg/import.js';
 export {
+  SHAPE_ATTRIBUTE,
   SvgDocument,
   type ExportOptions,
   type SplinesJSON,
@@ -34,3 +36,14 @@ export {
 } from './svg/document.js';
 export type { ResolvedStyle } from './svg/style.js';
 export type { Matrix } from './svg/matrix.js';
+export {
+  SkinRig,
+  IDENTITY_MATRIX,
+  type AffineMatrix,
+  type SkinError,
+  type SkinHandle,
+  type SkinMethod,
+  type SkinRigOptions,
+  type WeightSource,
+} from './skin/rig.js';
+export { SvgPuppet } from './skin/puppet.js';

@@ -35,7 +35,36 @@ export interface BezierScratch extends EmbindObject {
   bounds(): void;
 }
 
+/** wasm/bindings/skin_bindings.cpp — SkinRigHandle (see the flow comment there). */
+export interface SkinRigHandle extends EmbindObject {
+  resizeKinds(n: number): void;
+  kinds(): Int32Array;
+  setup(splines: SplineSetHandle, handleCount: number, samples: number): number;
+  handles(): Float64Array;
+  samplePoints(): Float64Array;
+  controlPoints(): Float64Array;
+  sampleWeights(): Float64Array;
+  pointWeights(): Float64Array;
+  pointGradients(): Float64Array;
+  useShepard(power: number): void;
+  precompute(): number;
+  transforms(): Float64Array;
+  update(): void;
+  points(): Float64Array;
+  baseline(method: number): Float64Array;
+  relax(): number;
+  relaxEnergies(): Float64Array;
+  error(method: number): number;
+  perCurveError(): Float64Array;
+  constraintResidual(): number;
+  curveCount(): number;
+  constrainedCount(): number;
+  totalLength(): number;
+  errorMessage(): string;
+}
+
 export interface SplinekitCoreModule {
+  SkinRigHandle: { new (): SkinRigHandle };
   SplineSetHandle: { new (): SplineSetHandle };
   BezierScratch: { new (): BezierScratch };
   gramMatrix(): number[];

@@ -64,6 +64,11 @@ export class SplineSet {
     return this.handle;
   }
 
+  /** @internal The wasm handle, for other capabilities' bindings that take a spline set. */
+  raw(): SplineSetHandle {
+    return this.live();
+  }
+
   get segmentCount(): number {
     return this.live().segmentCount();
   }

@@ -46,6 +46,13 @@ export function junctionAnchor(s: Pick<Spline, 'closed'>, j: number): number {
   return s.closed ? 3 * j : 3 * (j + 1);
 }
 
+/** The junction at anchor point `anchor`, or -1 for a handle or an end of an open spline (inverse of junctionAnchor). */
+export function anchorJunction(s: Pick<Spline, 'closed' | 'points'>, anchor: number): number {
+  if (anchor % 3 !== 0) return -1;
+  const j = s.closed ? anchor / 3 : anchor / 3 - 1;
+  return j >= 0 && j < junctionCount(s) ? j : -1;
+}
+
 /** Copies segment k of a spline into `target` (8 numbers: x0 y0 x1 y1 x2 y2 x3 y3). */
 export function segmentOf(s: Pick<Spline, 'closed' | 'points'>, k: number, target = new Float64Array(8)): Float64Array {
   const n = s.points.length / 2;

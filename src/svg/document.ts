@@ -48,7 +48,15 @@ export interface ExportOptions {
    * markup stays byte-for-byte; 'all' rewrites every shape as a `<path>` from the splines.
    */
   rewrite?: 'changed' | 'all';
+  /**
+   * Mark every rewritten shape with data-splinekit-shape="<index into shapes>", so a page can find
+   * the element to update when the splines move (see skin/puppet.ts).
+   */
+  tagShapes?: boolean;
 }
+
+/** The attribute `tagShapes` writes. */
+export const SHAPE_ATTRIBUTE = 'data-splinekit-shape';
 
 /** Where each shape came from in the retained markup (kept out of the public shape record). */
 export interface ShapeSource {
@@ -202,13 +210,15 @@ export class SvgDocument {
     return this.splines.slice(s.firstSpline, s.firstSpline + s.splineCount);
   }
 
+  /** Whether shape i moved: by more than 1e-10 of the drawing's size (float noise is not a change). */
   private changed(i: number): boolean {
     const shape = this.shapes[i], original = this.sources[i].original;
     if (original.length !== shape.splineCount) return true;
+    const tol = 1e-10 * this.size;
     for (let k = 0; k < shape.splineCount; k++) {
       const a = this.splines[shape.firstSpline + k].points, b = original[k];
       if (a.length !== b.length) return true;
-      for (let j = 0; j < a.length; j++) if (a[j] !== b[j]) return true;
+      for (let j = 0; j < a.length; j++) if (!(Math.abs(a[j] - b[j]) <= tol)) return true;
     }
     return false;
   }
@@ -247,6 +257,7 @@ export class SvgDocument {
       const toLocal = invert(shape.transform);
       if (!toLocal) return; // a collapsed (singular) element draws nothing either way
       const d = splinesToPathData(this.splinesOf(i), isIdentity(toLocal) ? undefined : toLocal);
+      if (options.tagShapes) el.setAttribute(SHAPE_ATTRIBUTE, String(i));
       if (el.localName === 'path') {
         el.setAttribute('d', d);
         el.removeAttribute('pathLength');

@@ -153,7 +153,7 @@ class Builder {
   private readonly svgRoot: boolean;
 
   constructor(
-    private readonly dom: Document,
+    dom: Document,
     private readonly name: string,
   ) {
     const root = dom.documentElement!;

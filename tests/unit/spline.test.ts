@@ -172,3 +172,16 @@ describe('memory', () => {
     leaked.dispose();
   });
 });
+
+test('anchorJunction inverts junctionAnchor', async () => {
+  const { anchorJunction, junctionAnchor, junctionCount } = await import('../../src/index.js');
+  const open = { closed: false, points: new Float64Array(2 * 10) }; // 3 segments
+  const closed = { closed: true, points: new Float64Array(2 * 12) }; // 4 segments
+  for (const s of [open, closed]) {
+    for (let j = 0; j < junctionCount(s); j++) expect(anchorJunction(s, junctionAnchor(s, j))).toBe(j);
+  }
+  expect(anchorJunction(open, 0)).toBe(-1); // open ends are not junctions
+  expect(anchorJunction(open, 9)).toBe(-1);
+  expect(anchorJunction(open, 4)).toBe(-1); // a handle
+  expect(anchorJunction(closed, 0)).toBe(0);
+});

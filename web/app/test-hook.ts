@@ -1,6 +1,5 @@
-import type { ContinuityKind } from '../../src/index.js';
+import { anchorJunction, type ContinuityKind } from '../../src/index.js';
 import type { Editor } from './editor.js';
-import { anchorJunction } from './junctions.js';
 
 /** A read-only window into the editor for end-to-end tests (window.splinekitEditor). */
 export interface EditorTestHook {

@@ -1,6 +1,5 @@
-import { CONTINUITY_KINDS, segmentCount, type ContinuityKind } from '../../src/index.js';
+import { CONTINUITY_KINDS, anchorJunction, segmentCount, type ContinuityKind } from '../../src/index.js';
 import { SetContinuityCommand } from '../app/commands.js';
-import { anchorJunction } from '../app/junctions.js';
 import type { Mode, ModeContext } from '../app/modes.js';
 import type { AnchorSelection } from '../app/state.js';
 import { CONTINUITY_COLORS, CONTINUITY_DESCRIPTIONS } from '../overlay/colors.js';

@@ -8,8 +8,7 @@ import {
   ShaderMaterial,
   type Material,
 } from 'three';
-import type { SvgDocument } from '../../src/index.js';
-import { anchorJunction } from '../app/junctions.js';
+import { anchorJunction, type SvgDocument } from '../../src/index.js';
 import type { AnchorSelection } from '../app/state.js';
 import type { View2D } from '../view2d/view2d.js';
 import { CONTINUITY_COLORS, END_COLOR, HANDLE_COLOR, HANDLE_LINE_COLOR, OUTLINE_COLOR, SELECTION_COLOR, hexToRGB } from './colors.js';

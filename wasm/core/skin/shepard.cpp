@@ -1,0 +1,86 @@
+#include "shepard.h"
+
+#include <cmath>
+#include <vector>
+
+namespace splinekit {
+
+namespace {
+
+// The index of a handle that p coincides with (relative to the handle spread), or -1.
+int coincident_handle(const double* d2, int h, double scale2) {
+  for (int i = 0; i < h; ++i)
+    if (d2[i] <= 1e-24 * scale2) return i;
+  return -1;
+}
+
+double spread2(const double* handles, int h) {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (int i = 0; i < h; ++i)
+    for (int a = 0; a < 2; ++a) lo[a] = std::fmin(lo[a], handles[2 * i + a]), hi[a] = std::fmax(hi[a], handles[2 * i + a]);
+  const double s2 = (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]);
+  return s2 > 0 ? s2 : 1.0;
+}
+
+}  // namespace
+
+void shepard_weights(const double* handles, int h, const double* points, int n, double power, double* out) {
+  std::vector<double> d2(h);
+  const double scale2 = spread2(handles, h);
+  for (int p = 0; p < n; ++p) {
+    const double x = points[2 * p], y = points[2 * p + 1];
+    for (int i = 0; i < h; ++i) {
+      const double dx = x - handles[2 * i], dy = y - handles[2 * i + 1];
+      d2[i] = dx * dx + dy * dy;
+    }
+    double* w = out + size_t(p) * h;
+    const int at = coincident_handle(d2.data(), h, scale2);
+    if (at >= 0) {
+      for (int i = 0; i < h; ++i) w[i] = i == at ? 1.0 : 0.0;
+      continue;
+    }
+    // phi_i = d_i^-k, computed relative to the nearest handle to stay finite for large k.
+    double dmin2 = d2[0];
+    for (int i = 1; i < h; ++i) dmin2 = std::fmin(dmin2, d2[i]);
+    double sum = 0;
+    for (int i = 0; i < h; ++i) sum += w[i] = std::pow(dmin2 / d2[i], 0.5 * power);
+    for (int i = 0; i < h; ++i) w[i] /= sum;
+  }
+}
+
+void shepard_gradients(const double* handles, int h, const double* points, int n, double power, double* out) {
+  std::vector<double> d2(h), phi(h), gx(h), gy(h);
+  const double scale2 = spread2(handles, h);
+  for (int p = 0; p < n; ++p) {
+    const double x = points[2 * p], y = points[2 * p + 1];
+    for (int i = 0; i < h; ++i) {
+      const double dx = x - handles[2 * i], dy = y - handles[2 * i + 1];
+      d2[i] = dx * dx + dy * dy;
+    }
+    double* g = out + size_t(p) * h * 2;
+    if (coincident_handle(d2.data(), h, scale2) >= 0) {
+      for (int i = 0; i < 2 * h; ++i) g[i] = 0.0;
+      continue;
+    }
+    // With phi_i = d_i^-k: grad phi_i = -k d_i^-k-2 (p - h_i); w_i = phi_i / S,
+    // grad w_i = (grad phi_i - w_i sum_j grad phi_j) / S. A common scale of phi cancels.
+    double dmin2 = d2[0];
+    for (int i = 1; i < h; ++i) dmin2 = std::fmin(dmin2, d2[i]);
+    double sum = 0, sx = 0, sy = 0;
+    for (int i = 0; i < h; ++i) {
+      phi[i] = std::pow(dmin2 / d2[i], 0.5 * power);
+      gx[i] = -power * phi[i] / d2[i] * (x - handles[2 * i]);
+      gy[i] = -power * phi[i] / d2[i] * (y - handles[2 * i + 1]);
+      sum += phi[i];
+      sx += gx[i];
+      sy += gy[i];
+    }
+    for (int i = 0; i < h; ++i) {
+      const double w = phi[i] / sum;
+      g[2 * i] = (gx[i] - w * sx) / sum;
+      g[2 * i + 1] = (gy[i] - w * sy) / sum;
+    }
+  }
+}
+
+}  // namespace splinekit
