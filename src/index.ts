@@ -44,6 +44,9 @@ export {
   type SkinHandle,
   type SkinMethod,
   type SkinRigOptions,
+  type PrecomputedWeights,
+  type WeightQueries,
   type WeightSource,
 } from './skin/rig.js';
 export { SvgPuppet } from './skin/puppet.js';
+export { animatedSVG, interpolateMatrix, poseAt, type AnimationOptions, type Keyframe } from './skin/animation.js';

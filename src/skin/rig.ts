@@ -36,10 +36,30 @@ export interface WeightSource {
   gradientsAt?(points: Float64Array, out: Float64Array): void;
 }
 
+/**
+ * Weights already evaluated at the rig's query positions (see SkinRig.weightQueries): for a
+ * worker that computes slow weights (harmonic, BBW) from plain arrays.
+ */
+export interface PrecomputedWeights {
+  readonly handleCount: number;
+  /** At the curve samples: #samples × #handles, row-major. */
+  readonly samples: Float64Array;
+  /** At the control points: #points × #handles. */
+  readonly points: Float64Array;
+  /** ∇w at the control points: #points × #handles × 2 (only the Jacobian baseline needs them). */
+  readonly gradients?: Float64Array;
+}
+
+/** Where a rig needs its weights: curve samples (midpoint rule) and control points, x,y pairs. */
+export interface WeightQueries {
+  samples: Float64Array;
+  points: Float64Array;
+}
+
 export interface SkinRigOptions {
   handles: readonly SkinHandle[];
-  /** 'shepard' (default) or a weight source (harmonic, BBW, painted…). */
-  weights?: 'shepard' | WeightSource;
+  /** 'shepard' (default), a weight source, or weights precomputed at weightQueries(). */
+  weights?: 'shepard' | WeightSource | PrecomputedWeights;
   /** Exponent of Shepard weights |p − h|^−power. Default 2. */
   shepardPower?: number;
   /** Quadrature samples per curve, for Â and Ŵ alike (paper: 100). Default 100. */
@@ -82,6 +102,20 @@ export class SkinRig {
     this.precomputeMs = precomputeMs;
   }
 
+  /** The positions where a rig for `doc` with `samples` per curve evaluates weights. */
+  static weightQueries(doc: SvgDocument, samples = 100): WeightQueries {
+    const set = SplineSet.from(doc.splines);
+    const h = new (core().SkinRigHandle)();
+    try {
+      h.resizeKinds(doc.splines.reduce((n, s) => n + s.continuity.length, 0));
+      checkStatus(h.setup(set.raw(), 1, samples), 'skin', () => h.errorMessage());
+      return { samples: h.samplePoints().slice(), points: h.controlPoints().slice() };
+    } finally {
+      h.delete();
+      set.dispose();
+    }
+  }
+
   /** Builds the rig: weights at the curve samples and control points, then one factorization. */
   static create(doc: SvgDocument, options: SkinRigOptions): SkinRig {
     const t0 = performance.now();
@@ -117,8 +151,8 @@ export class SkinRig {
         const hv = h.handles();
         handles.forEach((p, i) => ((hv[2 * i] = p.x), (hv[2 * i + 1] = p.y)));
         h.useShepard(power);
-      } else {
-        // Copy the positions out first: writing weights may not allocate, but the source may.
+      } else if ('weightsAt' in source) {
+        // Copy the positions out first: the source may allocate in wasm memory (views go stale).
         const samplesXY = h.samplePoints().slice(), controls = h.controlPoints().slice();
         const sw = new Float64Array(h.sampleWeights().length), pw = new Float64Array(h.pointWeights().length);
         source.weightsAt(samplesXY, sw);
@@ -128,6 +162,16 @@ export class SkinRig {
         h.sampleWeights().set(sw);
         h.pointWeights().set(pw);
         h.pointGradients().set(pg);
+      } else {
+        const expect = (what: string, got: Float64Array | undefined, want: number) => {
+          if (got && got.length !== want) throw new SplinekitError('invalid-input', `skin: precomputed ${what} weights have ${got.length} values, the rig needs ${want}`);
+        };
+        expect('sample', source.samples, h.sampleWeights().length);
+        expect('point', source.points, h.pointWeights().length);
+        expect('gradient', source.gradients, h.pointGradients().length);
+        h.sampleWeights().set(source.samples);
+        h.pointWeights().set(source.points);
+        if (source.gradients) h.pointGradients().set(source.gradients);
       }
       checkStatus(h.precompute(), 'skin', () => h.errorMessage());
     } catch (err) {

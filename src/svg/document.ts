@@ -1,7 +1,8 @@
 import { XMLSerializer } from '@xmldom/xmldom';
+import { SplinekitError } from '../core/errors.js';
 import { cloneSpline, segmentCount, type ContinuityKind, type Spline } from '../spline/spline.js';
 import { invert, isIdentity, type Matrix } from './matrix.js';
-import { splinesToPathData } from './path-data.js';
+import { formatNumber, splinesToPathData } from './path-data.js';
 import type { ResolvedStyle } from './style.js';
 
 /** Something the model keeps as is (or could not carry), reported once per kind. */
@@ -229,10 +230,65 @@ export class SvgDocument {
    * back into the element's own user space; `use` instances that changed are expanded in place.
    */
   toSVG(options: ExportOptions = {}): string {
-    const all = options.rewrite === 'all';
+    return serialize(this.rewrite(options.rewrite === 'all', Boolean(options.tagShapes)).out);
+  }
+
+  /**
+   * An animated SVG that plays with no script: every shape becomes a path with a SMIL
+   * `<animate attributeName="d">` through the frames (valid because the path structure never
+   * changes between frames). `frames[k]` holds the points of all splines (document order, as
+   * SkinRig.pose returns them) at time `times[k]` seconds, times increasing from 0.
+   */
+  toAnimatedSVG(frames: readonly Float64Array[], times: readonly number[], options: { repeat?: number | 'indefinite' } = {}): string {
+    if (frames.length < 2 || frames.length !== times.length) {
+      throw new SplinekitError('invalid-input', `animated SVG: need at least 2 frames with one time each (got ${frames.length} frames, ${times.length} times)`);
+    }
+    const total = this.splines.reduce((n, sp) => n + sp.points.length, 0);
+    frames.forEach((f, k) => {
+      if (f.length !== total) throw new SplinekitError('invalid-input', `animated SVG: frame ${k} has ${f.length} coordinates, expected ${total}`);
+      if (!f.every(Number.isFinite)) throw new SplinekitError('invalid-input', `animated SVG: frame ${k} has a non-finite coordinate`);
+      if (k > 0 && !(times[k] > times[k - 1])) throw new SplinekitError('invalid-input', 'animated SVG: frame times must increase');
+    });
+    if (times[0] !== 0) throw new SplinekitError('invalid-input', 'animated SVG: the first frame must be at time 0');
+    const duration = times[times.length - 1];
+    const keyTimes = times.map((t) => formatNumber(t / duration)).join(';');
+    const offsets: number[] = [];
+    let at = 0;
+    for (const sp of this.splines) offsets.push(at), (at += sp.points.length);
+    offsets.push(at);
+
+    const { out, elements } = this.rewrite(true, false);
+    for (const [i, el] of elements) {
+      const shape = this.shapes[i];
+      const toLocal = invert(shape.transform)!;
+      const values = frames.map((f) => {
+        const splines = [];
+        for (let k = shape.firstSpline; k < shape.firstSpline + shape.splineCount; k++) {
+          splines.push({ closed: this.splines[k].closed, points: f.subarray(offsets[k], offsets[k + 1]) });
+        }
+        return splinesToPathData(splines, isIdentity(toLocal) ? undefined : toLocal);
+      });
+      el.setAttribute('d', values[0]);
+      const animate = out.createElementNS(el.namespaceURI, el.prefix ? `${el.prefix}:animate` : 'animate');
+      animate.setAttribute('attributeName', 'd');
+      animate.setAttribute('dur', `${formatNumber(duration)}s`);
+      animate.setAttribute('repeatCount', String(options.repeat ?? 'indefinite'));
+      animate.setAttribute('keyTimes', keyTimes);
+      animate.setAttribute('values', values.join(';'));
+      el.appendChild(animate);
+    }
+    return serialize(out);
+  }
+
+  /**
+   * A copy of the markup with shapes (all, or those whose geometry changed) written back as
+   * paths from the splines; `elements` maps shape index → its path in the copy.
+   */
+  private rewrite(all: boolean, tag: boolean): { out: Document; elements: Map<number, Element> } {
     const out = this.dom.cloneNode(true) as Document;
     const cloneOf = pairElements(this.dom.documentElement!, out.documentElement!);
     const expansions = new Map<Element, Map<Element, Element>>();
+    const elements = new Map<number, Element>();
 
     // Resolves a shape's source to the element to rewrite in `out`, expanding `use`s on the way.
     const target = (source: ShapeSource): Element | undefined => {
@@ -257,10 +313,11 @@ export class SvgDocument {
       const toLocal = invert(shape.transform);
       if (!toLocal) return; // a collapsed (singular) element draws nothing either way
       const d = splinesToPathData(this.splinesOf(i), isIdentity(toLocal) ? undefined : toLocal);
-      if (options.tagShapes) el.setAttribute(SHAPE_ATTRIBUTE, String(i));
+      if (tag) el.setAttribute(SHAPE_ATTRIBUTE, String(i));
       if (el.localName === 'path') {
         el.setAttribute('d', d);
         el.removeAttribute('pathLength');
+        elements.set(i, el);
         return;
       }
       const path = out.createElementNS(el.namespaceURI, el.prefix ? `${el.prefix}:path` : 'path');
@@ -270,10 +327,15 @@ export class SvgDocument {
       path.setAttribute('d', d);
       while (el.firstChild) path.appendChild(el.firstChild);
       el.parentNode!.replaceChild(path, el);
+      elements.set(i, path);
     });
-    const xml = new XMLSerializer().serializeToString(out as unknown as Parameters<XMLSerializer['serializeToString']>[0]);
-    return xml.startsWith('<?xml') ? xml : `<?xml version="1.0" encoding="UTF-8"?>\n${xml}`;
+    return { out, elements };
   }
+}
+
+function serialize(out: Document): string {
+  const xml = new XMLSerializer().serializeToString(out as unknown as Parameters<XMLSerializer['serializeToString']>[0]);
+  return xml.startsWith('<?xml') ? xml : `<?xml version="1.0" encoding="UTF-8"?>\n${xml}`;
 }
 
 function findById(root: Element, id: string): Element | null {
