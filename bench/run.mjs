@@ -8,6 +8,7 @@ import os from 'node:os';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
+import { skinAccuracy, skinSpeed } from './skin.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
 const data = join(root, '../shared/data');
@@ -92,10 +93,14 @@ const size = {
   wasm_gzip_kB: gzipSync(wasmBytes).length / 1024,
 };
 
+// ---- skinning ---------------------------------------------------------------------------------
+const skin = skinSpeed(data, time);
+const accuracy = skinAccuracy(data);
+
 // ---- report -----------------------------------------------------------------------------------
 const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, ${(os.totalmem() / 2 ** 30).toFixed(0)} GiB, Node ${process.version}, ${os.platform()} ${os.release()}`;
 const date = new Date().toISOString().slice(0, 10);
-const results = { date, machine, svg: rows, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy }, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -110,6 +115,15 @@ const kernelTable = [
   ...Object.keys(wasm).map((k) => `| ${k.replace('_ms', '')} | ${f(wasm[k], 3)} | ${f(native[k], 3)} | ${f(wasm[k] / native[k])} |`),
 ];
 const bigRow = rows.find((r) => r.file === bigRel);
+const e = (x) => x.toExponential(2);
+const accuracyTable = [
+  '| character | handles | fit | all control points | interpolated | Jacobian | all / fit |',
+  '|---|---:|---:|---:|---:|---:|---:|',
+  ...accuracy.map((r) => `| ${r.file} | ${r.handles} | ${e(r.fit)} | ${e(r.naive)} | ${e(r.interpolated)} | ${e(r.jacobian)} | ${f(r.naive_over_fit, 1)} |`),
+];
+const meanRatio = accuracy.reduce((n, r) => n + r.naive_over_fit, 0) / accuracy.length;
+const worstRatio = Math.min(...accuracy.map((r) => r.naive_over_fit));
+const geoRatio = Math.exp(accuracy.reduce((n, r) => n + Math.log(r.naive_over_fit), 0) / accuracy.length);
 const md = `# Benchmarks
 
 Measured by \`npm run bench\` (bench/run.mjs) on ${date}.
@@ -134,6 +148,26 @@ wasm memory included); native calls the same C++ functions directly (bench/nativ
 
 ${kernelTable.join('\n')}
 
+## Skinning (Liu, Jacobson & Gingold 2014)
+
+Speed on ${skin.file.replace('svg/', '')} (${skin.curves} curves), ${skin.handles} handles, Shepard weights, 100 samples per curve:
+
+| precompute ms | update ms | flexible relax ms | bytes allocated by 1,000 updates |
+|---:|---:|---:|---:|
+| ${f(skin.precompute_ms, 0)} | ${f(skin.update_ms, 3)} | ${f(skin.relax_ms, 0)} | ${skin.bytes_allocated_by_1000_updates} |
+
+Budgets: precompute ≤ 1 s, update ≤ 2 ms, relax ≤ 300 ms (the paper, Python, 9.5k curves: 42 s, 0.1 s, 16 s).
+
+Accuracy on every shared character: handles spread over the artwork (farthest points), 5 random
+poses each (every handle rotated about itself by up to ±60°), Shepard weights. RMS distance to
+the linear-blend-skinned target, integrated along the curves, over the bounding-box diagonal
+(mean over the poses), for the fit and the paper's three baselines:
+
+${accuracyTable.join('\n')}
+
+All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${f(geoRatio, 1)}×), **${f(worstRatio, 1)}×** at worst
+(the fit must beat that baseline on every file and by ≥ 2× on average).
+
 ## Memory and size
 
 - malloc'd bytes in the wasm heap after 20 more imports of ${bigRel.replace('svg/', '')}: **${leak}** more than before (0 = nothing leaked).
@@ -145,4 +179,7 @@ console.log(table.join('\n'));
 console.log();
 console.log(kernelTable.join('\n'));
 console.log(`\nleak after 20 imports: ${leak} bytes; module ${f(size.module_kB, 1)} kB (${f(size.module_gzip_kB, 1)} kB gz), wasm ${f(size.wasm_kB, 1)} kB (${f(size.wasm_gzip_kB, 1)} kB gz)`);
+console.log(`\nskin: ${JSON.stringify(skin)}`);
+console.log(accuracyTable.join('\n'));
+console.log(`all/fit: mean ${f(meanRatio, 2)}x, geometric ${f(geoRatio, 2)}x, worst ${f(worstRatio, 2)}x`);
 console.log('wrote BENCHMARKS.md and build/bench/results.json');

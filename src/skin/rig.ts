@@ -228,6 +228,20 @@ export class SkinRig {
     return { total, rms: Math.sqrt(total / (length > 0 ? length : 1)), perCurve: h.perCurveError().slice() };
   }
 
+  /** Rest positions of the curve samples (x,y pairs; `samples` per curve, in curve order). */
+  samplePositions(): Float64Array {
+    return this.live().samplePoints().slice();
+  }
+
+  /** Weight of handle `i` at every curve sample (for showing a handle's influence). */
+  handleWeights(i: number): Float64Array {
+    if (!(Number.isInteger(i) && i >= 0 && i < this.handleCount)) throw new SplinekitError('invalid-input', `skin: no handle ${i}`);
+    const w = this.live().sampleWeights(), h = this.handleCount;
+    const out = new Float64Array(w.length / h);
+    for (let k = 0; k < out.length; k++) out[k] = w[k * h + i];
+    return out;
+  }
+
   /** max |b − ρR(θ)a| over the constrained junctions of the current points (rigid form). */
   constraintResidual(): number {
     return this.live().constraintResidual();

@@ -40,7 +40,7 @@ namespace splinekit {
 struct SkinOptions {
   int samples = 100;             // S, quadrature samples per curve (paper: 100)
   int relax_max_iterations = 20; // flexible G1/angle: cap on alternating iterations
-  double relax_tolerance = 1e-7; // stop when the energy drops by less than this fraction
+  double relax_tolerance = 1e-3; // stop when an iteration lowers the energy by less than this fraction
 };
 
 // What relax() did, for tests and the UI.

@@ -43,7 +43,10 @@ void shepard_weights(const double* handles, int h, const double* points, int n, 
     double dmin2 = d2[0];
     for (int i = 1; i < h; ++i) dmin2 = std::fmin(dmin2, d2[i]);
     double sum = 0;
-    for (int i = 0; i < h; ++i) sum += w[i] = std::pow(dmin2 / d2[i], 0.5 * power);
+    if (power == 2.0)
+      for (int i = 0; i < h; ++i) sum += w[i] = dmin2 / d2[i];  // the default: no pow() per weight
+    else
+      for (int i = 0; i < h; ++i) sum += w[i] = std::pow(dmin2 / d2[i], 0.5 * power);
     for (int i = 0; i < h; ++i) w[i] /= sum;
   }
 }
