@@ -8,12 +8,6 @@ namespace splinekit {
 namespace {
 
 // The index of a handle that p coincides with (relative to the handle spread), or -1.
-int coincident_handle(const double* d2, int h, double scale2) {
-  for (int i = 0; i < h; ++i)
-    if (d2[i] <= 1e-24 * scale2) return i;
-  return -1;
-}
-
 double spread2(const double* handles, int h) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (int i = 0; i < h; ++i)
@@ -22,26 +16,34 @@ double spread2(const double* handles, int h) {
   return s2 > 0 ? s2 : 1.0;
 }
 
+// Squared distances from (x, y) to every handle into d2; returns the index of a handle the point
+// coincides with (relative to the handle spread), or -1, and the smallest distance in dmin2.
+int distances(const double* handles, int h, double x, double y, double scale2, double* d2, double& dmin2) {
+  int at = -1;
+  dmin2 = INFINITY;
+  for (int i = 0; i < h; ++i) {
+    const double dx = x - handles[2 * i], dy = y - handles[2 * i + 1];
+    d2[i] = dx * dx + dy * dy;
+    dmin2 = std::fmin(dmin2, d2[i]);
+    if (at < 0 && d2[i] <= 1e-24 * scale2) at = i;
+  }
+  return at;
+}
+
 }  // namespace
 
 void shepard_weights(const double* handles, int h, const double* points, int n, double power, double* out) {
   std::vector<double> d2(h);
   const double scale2 = spread2(handles, h);
   for (int p = 0; p < n; ++p) {
-    const double x = points[2 * p], y = points[2 * p + 1];
-    for (int i = 0; i < h; ++i) {
-      const double dx = x - handles[2 * i], dy = y - handles[2 * i + 1];
-      d2[i] = dx * dx + dy * dy;
-    }
+    double dmin2;
+    const int at = distances(handles, h, points[2 * p], points[2 * p + 1], scale2, d2.data(), dmin2);
     double* w = out + size_t(p) * h;
-    const int at = coincident_handle(d2.data(), h, scale2);
     if (at >= 0) {
       for (int i = 0; i < h; ++i) w[i] = i == at ? 1.0 : 0.0;
       continue;
     }
     // phi_i = d_i^-k, computed relative to the nearest handle to stay finite for large k.
-    double dmin2 = d2[0];
-    for (int i = 1; i < h; ++i) dmin2 = std::fmin(dmin2, d2[i]);
     double sum = 0;
     if (power == 2.0)
       for (int i = 0; i < h; ++i) sum += w[i] = dmin2 / d2[i];  // the default: no pow() per weight
@@ -56,19 +58,15 @@ void shepard_gradients(const double* handles, int h, const double* points, int n
   const double scale2 = spread2(handles, h);
   for (int p = 0; p < n; ++p) {
     const double x = points[2 * p], y = points[2 * p + 1];
-    for (int i = 0; i < h; ++i) {
-      const double dx = x - handles[2 * i], dy = y - handles[2 * i + 1];
-      d2[i] = dx * dx + dy * dy;
-    }
+    double dmin2;
+    const int at = distances(handles, h, x, y, scale2, d2.data(), dmin2);
     double* g = out + size_t(p) * h * 2;
-    if (coincident_handle(d2.data(), h, scale2) >= 0) {
+    if (at >= 0) {
       for (int i = 0; i < 2 * h; ++i) g[i] = 0.0;
       continue;
     }
     // With phi_i = d_i^-k: grad phi_i = -k d_i^-k-2 (p - h_i); w_i = phi_i / S,
     // grad w_i = (grad phi_i - w_i sum_j grad phi_j) / S. A common scale of phi cancels.
-    double dmin2 = d2[0];
-    for (int i = 1; i < h; ++i) dmin2 = std::fmin(dmin2, d2[i]);
     double sum = 0, sx = 0, sy = 0;
     for (int i = 0; i < h; ++i) {
       phi[i] = std::pow(dmin2 / d2[i], 0.5 * power);
