@@ -13,7 +13,7 @@ export const info: Command = {
   usage,
   async run(args) {
     const { values, positionals } = parse({ args, options: { json: { type: 'string' } }, allowPositionals: true });
-    if (positionals.length !== 1) throw new UsageError(`info takes one SVG file\n${usage}`);
+    if (positionals.length !== 1) throw new UsageError('info takes one SVG file (see splinekit info --help)');
     const file = positionals[0];
     const doc = parseSVG(readInput(file, DEFAULT_MAX_BYTES), { name: basename(file) });
     const stats = doc.stats();

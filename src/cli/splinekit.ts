@@ -9,6 +9,7 @@ import { basename } from 'node:path';
 import { parseArgs, type ParseArgsConfig } from 'node:util';
 import { SplinekitError, init } from '../index.js';
 import { info } from './info.js';
+import { skin } from './skin.js';
 
 /** Raised for wrong usage (exit code 2). */
 export class UsageError extends Error {}
@@ -19,7 +20,7 @@ export interface Command {
   run(args: string[]): Promise<void>;
 }
 
-const COMMANDS: Record<string, Command> = { info };
+const COMMANDS: Record<string, Command> = { info, skin };
 
 function help(): string {
   const lines = ['usage: splinekit <command> [options]', '', 'commands:'];

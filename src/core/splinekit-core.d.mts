@@ -70,6 +70,7 @@ export interface SplinekitCoreModule {
   gramMatrix(): number[];
   /** wasm/bindings/core_bindings.cpp: bytes in use by malloc. */
   heapUsed(): number;
+  SkinWeightsHandle: { new (): SkinWeightsHandle };
   HEAP8: Int8Array;
 }
 
@@ -80,3 +81,29 @@ export interface SplinekitCoreOptions {
 
 declare function createSplinekitCore(options?: SplinekitCoreOptions): Promise<SplinekitCoreModule>;
 export default createSplinekitCore;
+
+/**
+ * wasm/bindings/skin_weights_bindings.cpp — SkinWeightsHandle: harmonic and bounded biharmonic
+ * weights on a 2D triangle mesh, evaluated at points. Status 0 = ok, else see error().
+ */
+export interface SkinWeightsHandle extends EmbindObject {
+  resize(vertices: number, triangles: number, handles: number): void;
+  vertices(): Float64Array;
+  triangles(): Int32Array;
+  handles(): Int32Array;
+  harmonic(): number;
+  /** mass: 0 barycentric, 1 Voronoi. */
+  bbw(maxIterations: number, boundTolerance: number, multiplierTolerance: number, partitionOfUnity: boolean, mass: number): number;
+  error(): string;
+  handleCount(): number;
+  weights(): Float64Array;
+  triangleGradients(): Float64Array;
+  iterations(): Int32Array;
+  converged(): boolean;
+  pinned(): number;
+  resizeQueries(points: number): void;
+  queries(): Float64Array;
+  weightsAt(): number;
+  gradientsAt(): number;
+  result(): Float64Array;
+}
