@@ -1,5 +1,6 @@
 /**
- * The splinekit editor: loads the WebAssembly core, builds the editor and opens the first sample.
+ * The splinekit editor: loads the WebAssembly core, builds the editor and opens the document of
+ * the last visit (autosaved locally) or the first sample.
  */
 import { init } from '../src/index.js';
 import { Editor } from './app/editor.js';
@@ -22,7 +23,9 @@ async function start(): Promise<void> {
   }
   try {
     const samples = await editor.loadSamples();
-    if (samples.length > 0) await editor.openSample(samples[0], { undoable: false });
+    // The document (and mode) of the last visit, autosaved; else the first sample.
+    const restored = await editor.restoreSession();
+    if (!restored && samples.length > 0) await editor.openSample(samples[0], { undoable: false });
   } catch (err) {
     editor.state.setError(err instanceof Error ? err.message : String(err));
   }

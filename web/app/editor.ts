@@ -1,12 +1,15 @@
 import type { SvgDocument } from '../../src/index.js';
 import { DocumentMode } from '../modes/document-mode.js';
+import { SkinMode } from '../modes/skin/skin-mode.js';
 import { ControlOverlay } from '../overlay/overlay.js';
 import { h } from '../ui/dom.js';
 import { SidePanel } from '../ui/panel.js';
 import { StatusBar } from '../ui/statusbar.js';
 import { Toolbar, type Sample } from '../ui/toolbar.js';
 import { View2D, type ViewPointer } from '../view2d/view2d.js';
+import { loadSession, saveSession, type SavedSession } from './autosave.js';
 import { OpenDocumentCommand } from './commands.js';
+import { download } from './download.js';
 import { History } from './history.js';
 import { fetchBytes, importSVG, readFile } from './loader.js';
 import { ModeRegistry, type ModeContext } from './modes.js';
@@ -30,7 +33,10 @@ export class Editor {
   readonly toolbar: Toolbar;
   readonly status: StatusBar;
   readonly panel = new SidePanel();
+  readonly skin = new SkinMode();
   samples: Sample[] = [];
+  /** The strip under the view that modes fill (the skin timeline). */
+  private readonly dock: HTMLElement;
 
   constructor(root: HTMLElement) {
     this.toolbar = new Toolbar({
@@ -46,14 +52,16 @@ export class Editor {
     });
     this.status = new StatusBar(() => this.state.setError(null));
     const stage = h('main', { class: 'stage' });
+    this.dock = h('div', { class: 'dock' });
     const dropHint = h('div', { class: 'drop-hint', 'aria-hidden': 'true' }, h('div', {}, 'Drop an SVG file to open it'));
-    root.append(this.toolbar.el, h('div', { class: 'workspace' }, stage, this.panel.el), this.status.el, dropHint);
+    root.append(this.toolbar.el, h('div', { class: 'workspace' }, h('div', { class: 'stage-column' }, stage, this.dock), this.panel.el), this.status.el, dropHint);
 
     this.view = new View2D(stage);
     this.overlay = new ControlOverlay(this.view);
-    const context = (): ModeContext => ({ state: this.state, history: this.history, view: this.view, overlay: this.overlay, panel: this.panel.body });
+    const context = (): ModeContext => ({ state: this.state, history: this.history, view: this.view, overlay: this.overlay, panel: this.panel.body, dock: this.dock });
     this.modes = new ModeRegistry(context);
     this.modes.register(new DocumentMode());
+    this.modes.register(this.skin);
 
     this.wire();
     this.listenKeys();
@@ -66,12 +74,15 @@ export class Editor {
     return this.state.doc;
   }
 
-  /** Opens bytes as a document: undoable, or as the starting document (no history entry). */
-  async openBytes(bytes: Uint8Array, name: string, options: { undoable: boolean }): Promise<boolean> {
+  /**
+   * Opens bytes as a document: undoable, or as the starting document (no history entry). `hash`
+   * keeps the identity of a restored document (autosave keys); by default it is computed.
+   */
+  async openBytes(bytes: Uint8Array, name: string, options: { undoable: boolean; hash?: string }): Promise<boolean> {
     this.state.setBusy(`Opening ${name}…`);
     try {
       await nextPaint();
-      const loaded = importSVG(bytes, name);
+      const loaded = importSVG(bytes, name, options.hash);
       this.show(loaded, options.undoable);
       return true;
     } catch (err) {
@@ -121,17 +132,40 @@ export class Editor {
     this.history.redo();
   }
 
-  /** Downloads the document as SVG (shapes whose geometry changed are written back). */
+  /**
+   * Reopens the document of the last visit (autosaved) in the mode it was in. Returns false when
+   * there is none or it cannot be opened any more.
+   */
+  async restoreSession(saved: SavedSession | null = loadSession()): Promise<boolean> {
+    if (!saved) return false;
+    const ok = await this.openBytes(new TextEncoder().encode(saved.svg), saved.file, { undoable: false, hash: saved.hash });
+    if (ok && this.modes.list.some((m) => m.id === saved.mode)) this.modes.activate(saved.mode);
+    return ok;
+  }
+
+  /**
+   * Downloads the document as SVG (shapes whose geometry changed are written back; the active
+   * mode may add its data, e.g. the skin rig).
+   */
   exportSVG(): void {
     const current = this.state.current;
     if (!current) return;
-    const blob = new Blob([current.doc.toSVG()], { type: 'image/svg+xml' });
-    const url = URL.createObjectURL(blob);
-    const a = h('a', { href: url, download: current.file.replace(/(\.svg)?$/i, '.svg') });
-    document.body.append(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(url), 1000);
+    let text: string;
+    try {
+      text = this.modes.active?.exportDocument?.(current) ?? current.doc.toSVG();
+    } catch (err) {
+      this.state.setError(`Export failed: ${err instanceof Error ? err.message : String(err)}`);
+      return;
+    }
+    download(text, current.file.replace(/(\.svg)?$/i, '.svg'));
+  }
+
+  /** Remembers the open document and mode, so that a reload comes back to them. */
+  private autosaveSession(): void {
+    const current = this.state.current, mode = this.modes.active;
+    if (!current || !mode) return;
+    const problem = saveSession({ file: current.file, hash: current.hash, mode: mode.id, svg: new TextDecoder().decode(current.source) });
+    if (problem) this.state.setMessage(`Not autosaved: ${problem}`);
   }
 
   private show(loaded: LoadedDocument, undoable: boolean): void {
@@ -149,6 +183,7 @@ export class Editor {
       toolbar.setHasDocument(current !== null);
       toolbar.setSample(current?.file ?? '');
       document.title = current ? `${current.file} — splinekit` : 'splinekit editor';
+      this.autosaveSession();
     });
     state.events.on('continuity', () => {
       overlay.recolor();
@@ -162,9 +197,10 @@ export class Editor {
     });
     state.events.on('error', (message) => status.setError(message));
     state.events.on('busy', (what) => {
-      status.setMessage(what);
+      status.setMessage(what ?? state.message);
       document.body.classList.toggle('busy', what !== null);
     });
+    state.events.on('message', (text) => status.setMessage(state.busy ?? text));
     this.history.events.on('change', (history) => toolbar.setHistory(history));
     toolbar.setHistory(this.history);
     toolbar.setHasDocument(false);
@@ -174,6 +210,8 @@ export class Editor {
     this.modes.events.on('change', (mode) => {
       toolbar.setModes(this.modes.list, mode);
       this.panel.setHeading(mode.title, mode.description);
+      this.panel.setModeKeys(mode.keys ?? []);
+      this.autosaveSession();
     });
 
     // Pointer input goes to the active mode; whatever it does not claim pans the view.

@@ -1,12 +1,16 @@
 import { DEFAULT_MAX_BYTES, SplinekitError, parseSVG } from '../../src/index.js';
+import { contentHash } from './autosave.js';
 import type { LoadedDocument } from './state.js';
 
-/** Parses SVG bytes into a document, timing the import. Throws an Error with a user-facing message. */
-export function importSVG(bytes: Uint8Array, file: string): LoadedDocument {
+/**
+ * Parses SVG bytes into a document, timing the import. `hash` identifies the content for
+ * autosave (default: computed from the bytes). Throws an Error with a user-facing message.
+ */
+export function importSVG(bytes: Uint8Array, file: string, hash = contentHash(bytes)): LoadedDocument {
   const t0 = performance.now();
   try {
     const doc = parseSVG(bytes, { name: file });
-    return { doc, file, importMs: performance.now() - t0, bytes: bytes.length };
+    return { doc, file, importMs: performance.now() - t0, bytes: bytes.length, source: bytes, hash };
   } catch (err) {
     if (err instanceof SplinekitError) throw new Error(err.message, { cause: err });
     throw new Error(`${file}: could not be read as SVG (${err instanceof Error ? err.message : String(err)})`, { cause: err });

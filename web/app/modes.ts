@@ -2,7 +2,7 @@ import type { View2D, ViewPointer } from '../view2d/view2d.js';
 import type { ControlOverlay } from '../overlay/overlay.js';
 import { Emitter } from './events.js';
 import type { History } from './history.js';
-import type { EditorState } from './state.js';
+import type { EditorState, LoadedDocument } from './state.js';
 
 /** What a mode gets to work with while it is active. */
 export interface ModeContext {
@@ -12,6 +12,8 @@ export interface ModeContext {
   overlay: ControlOverlay;
   /** The side panel's body: the mode owns its content while active. */
   panel: HTMLElement;
+  /** A strip under the view (e.g. a timeline): the mode owns its content while active. */
+  dock: HTMLElement;
 }
 
 /**
@@ -23,6 +25,8 @@ export interface Mode {
   readonly title: string;
   /** One line shown as the switcher's tooltip. */
   readonly description: string;
+  /** The mode's own keys and gestures, listed first in the panel's Keys section: [keys, what]. */
+  readonly keys?: readonly (readonly [string, string])[];
   /** Called when the mode becomes active: build the panel, subscribe to state. */
   activate(ctx: ModeContext): void;
   /** Called when another mode takes over: unsubscribe, release what activate() made. */
@@ -39,6 +43,11 @@ export interface Mode {
   click?(p: ViewPointer): void;
   /** A key the editor did not use itself; return true when handled. */
   keyDown?(e: KeyboardEvent): boolean;
+  /**
+   * The markup the toolbar's Export writes for `current` while this mode is active (e.g. with the
+   * mode's data embedded); undefined leaves the default (the document as it is).
+   */
+  exportDocument?(current: LoadedDocument): string | undefined;
 }
 
 export class ModeRegistry {
@@ -68,6 +77,7 @@ export class ModeRegistry {
     this._active?.deactivate();
     const ctx = this.context();
     ctx.panel.replaceChildren();
+    ctx.dock.replaceChildren();
     this._active = mode;
     mode.activate(ctx);
     this.events.emit('change', mode);

@@ -10,6 +10,10 @@ export interface LoadedDocument {
   importMs: number;
   /** Size of the file in bytes. */
   bytes: number;
+  /** The file's bytes as read. */
+  source: Uint8Array;
+  /** Identifies the content (autosave keys): see app/autosave.ts contentHash. */
+  hash: string;
 }
 
 /** A selected anchor: point index `anchor` (a multiple of 3) of spline `spline`. */
@@ -29,6 +33,8 @@ export interface StateEvents extends Record<string, unknown> {
   error: string | null;
   /** A long operation runs (its description), or null when it ended. */
   busy: string | null;
+  /** Information for the status bar (progress of background work, notes), or null. */
+  message: string | null;
 }
 
 /**
@@ -43,6 +49,7 @@ export class EditorState {
   private _overlay = true;
   private _error: string | null = null;
   private _busy: string | null = null;
+  private _message: string | null = null;
 
   get current(): LoadedDocument | null {
     return this._current;
@@ -102,5 +109,16 @@ export class EditorState {
     if (what === this._busy) return;
     this._busy = what;
     this.events.emit('busy', what);
+  }
+
+  /** Shows a note in the status bar (background progress, autosave problems); null clears it. */
+  setMessage(text: string | null): void {
+    if (text === this._message) return;
+    this._message = text;
+    this.events.emit('message', text);
+  }
+
+  get message(): string | null {
+    return this._message;
   }
 }

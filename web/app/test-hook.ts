@@ -1,4 +1,5 @@
 import { anchorJunction, type ContinuityKind } from '../../src/index.js';
+import type { SkinTestState } from '../modes/skin/skin-mode.js';
 import type { Editor } from './editor.js';
 
 /** A read-only window into the editor for end-to-end tests (window.splinekitEditor). */
@@ -21,6 +22,16 @@ export interface EditorTestHook {
   };
   /** Where an anchor is on screen (client pixels), to click it like a user would. */
   anchorOnScreen(spline: number, anchor: number): { x: number; y: number } | null;
+  /** Where a document point is on screen (client pixels). */
+  docToScreen(x: number, y: number): { x: number; y: number };
+  /** The drawing's bounds at import [xmin, ymin, xmax, ymax], or null. */
+  bounds(): [number, number, number, number] | null;
+  /** Skin mode: rig, pose (checksum of the posed points), keyframes, layers. */
+  skin(): SkinTestState;
+  /** Where skin handle `index` is drawn (client pixels), or null. */
+  skinHandleOnScreen(index: number): { x: number; y: number } | null;
+  /** The skin gizmo of the selected handle (client pixels), or null. */
+  skinGizmoOnScreen(): { center: { x: number; y: number }; knob: { x: number; y: number }; ring: number } | null;
 }
 
 declare global {
@@ -61,9 +72,32 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
       const p = editor.doc?.splines[spline]?.points;
       if (!p || 2 * anchor + 1 >= p.length) return null;
       const [sx, sy] = editor.view.toScreen(p[2 * anchor], p[2 * anchor + 1]);
-      const r = editor.view.canvas.getBoundingClientRect();
-      return { x: r.left + sx, y: r.top + sy };
+      return client(sx, sy);
+    },
+    docToScreen(x, y) {
+      const [sx, sy] = editor.view.toScreen(x, y);
+      return client(sx, sy);
+    },
+    bounds() {
+      const b = editor.doc?.bounds;
+      return b ? [...b] : null;
+    },
+    skin() {
+      return editor.skin.testState();
+    },
+    skinHandleOnScreen(index) {
+      const at = editor.skin.handleOnCanvas(index);
+      return at ? client(at[0], at[1]) : null;
+    },
+    skinGizmoOnScreen() {
+      const g = editor.skin.gizmoOnCanvas();
+      return g ? { center: client(...g.center), knob: client(...g.knob), ring: g.ring } : null;
     },
   };
+  /** Canvas pixels → client pixels. */
+  function client(sx: number, sy: number): { x: number; y: number } {
+    const r = editor.view.canvas.getBoundingClientRect();
+    return { x: r.left + sx, y: r.top + sy };
+  }
   window.splinekitEditor = Object.freeze(hook);
 }

@@ -7,15 +7,22 @@ export class SidePanel {
   readonly body: HTMLElement;
   private readonly title = h('h2', { class: 'panel-title' });
   private readonly subtitle = h('p', { class: 'panel-subtitle' });
+  private readonly modeKeys = h('dl', { class: 'facts keys mode-keys', 'data-testid': 'mode-keys' });
 
   constructor() {
     this.body = h('div', { class: 'panel-body' });
-    this.el = h('aside', { class: 'panel', 'aria-label': 'Side panel' }, h('div', { class: 'panel-head' }, this.title, this.subtitle), this.body, shortcuts());
+    this.el = h('aside', { class: 'panel', 'aria-label': 'Side panel' }, h('div', { class: 'panel-head' }, this.title, this.subtitle), this.body, shortcuts(this.modeKeys));
   }
 
   setHeading(title: string, subtitle: string): void {
     this.title.textContent = title;
     this.subtitle.textContent = subtitle;
+  }
+
+  /** The active mode's keys, shown above the editor's in the Keys section. */
+  setModeKeys(keys: readonly (readonly [string, string])[]): void {
+    this.modeKeys.hidden = keys.length === 0;
+    this.modeKeys.replaceChildren(...keys.flatMap(([k, what]) => [h('dt', {}, k), h('dd', {}, what)]));
   }
 }
 
@@ -44,8 +51,8 @@ export function facts(names: string[]): { el: HTMLElement; set: (name: string, v
   };
 }
 
-/** The view's and the editor's keys, always at the bottom of the panel. */
-function shortcuts(): HTMLElement {
+/** The active mode's keys, then the view's and the editor's, always at the bottom of the panel. */
+function shortcuts(modeKeys: HTMLElement): HTMLElement {
   const keys: [string, string][] = [
     ['Drag · Space+drag · middle button', 'pan'],
     ['Wheel · pinch', 'zoom at the cursor'],
@@ -58,6 +65,7 @@ function shortcuts(): HTMLElement {
     'details',
     { class: 'panel-section shortcuts' },
     h('summary', {}, 'Keys'),
+    modeKeys,
     h('dl', { class: 'facts keys' }, ...keys.flatMap(([k, what]) => [h('dt', {}, k), h('dd', {}, what)])),
   );
 }

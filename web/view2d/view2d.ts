@@ -129,6 +129,20 @@ export class View2D {
     this.viewChanged();
   }
 
+  /**
+   * Draws another version of the shown document (e.g. a deformed copy with the same frame),
+   * keeping the view where it is.
+   */
+  showDrawing(doc: SvgDocument): void {
+    this.doc = doc;
+    this.rebuild();
+  }
+
+  /** The document being drawn. */
+  get drawn(): SvgDocument | null {
+    return this.doc;
+  }
+
   /** Rebuilds the drawing from the model (after geometry changed). */
   rebuild(): void {
     window.clearTimeout(this.rebuildTimer);

@@ -1,0 +1,170 @@
+import { Group } from 'three';
+import { segmentCount, type SvgDocument } from '../../../src/index.js';
+import { flattenSpline } from '../../view2d/tessellate.js';
+import type { View2D } from '../../view2d/view2d.js';
+import { HEAT, Ramp, SKIN_COLORS, WEIGHT } from './colors.js';
+import { Ribbons } from './ribbons.js';
+
+/** What the layers show; each is drawn only when on and its data is given. */
+export interface CurveLayerData {
+  doc: SvgDocument;
+  /** Samples per curve of the arrays below. */
+  perCurve: number;
+  /** Target positions at the curve samples (x,y pairs, curve order), dashed. */
+  target: Float64Array | null;
+  /** Per curve error (for the heat map), or null for a plain target. */
+  heat: Float64Array | null;
+  /** Control points of the naive baseline (all splines), drawn as an outline. */
+  naive: Float64Array | null;
+  /** Curve positions (x,y pairs at the samples) and the selected handle's weight at each. */
+  field: { positions: Float64Array; weights: Float64Array } | null;
+}
+
+/** Of the rig's samples per curve, every STRIDE-th is drawn (25 of the paper's 100: smooth on screen). */
+const STRIDE = 4;
+
+/**
+ * Polylines through every STRIDE-th sample along each spline (closed splines wrap around), as
+ * segments x0 y0 x1 y1 with a color per end.
+ */
+function sampleSegments(doc: SvgDocument, perCurve: number, xy: Float64Array, color: (curve: number, sample: number, out: Float32Array, at: number) => void) {
+  const picked = Math.ceil(perCurve / STRIDE), first = Math.floor((perCurve - (picked - 1) * STRIDE - 1) / 2);
+  let total = 0;
+  for (const s of doc.splines) {
+    const m = segmentCount(s) * picked;
+    if (m >= 2) total += s.closed ? m : m - 1;
+  }
+  const segments = new Float32Array(total * 4), colors = new Float32Array(total * 6);
+  let seg = 0, curve0 = 0;
+  for (const s of doc.splines) {
+    const n = segmentCount(s), m = n * picked;
+    // The j-th drawn point of this spline: curve ⌊j / picked⌋, its sample first + STRIDE·(j mod picked).
+    const sampleOf = (j: number) => (curve0 + Math.floor(j / picked)) * perCurve + first + STRIDE * (j % picked);
+    if (m >= 2) {
+      const count = s.closed ? m : m - 1;
+      for (let j = 0; j < count; j++) {
+        const a = sampleOf(j), b = sampleOf((j + 1) % m);
+        segments[4 * seg] = xy[2 * a];
+        segments[4 * seg + 1] = xy[2 * a + 1];
+        segments[4 * seg + 2] = xy[2 * b];
+        segments[4 * seg + 3] = xy[2 * b + 1];
+        color(Math.floor(a / perCurve), a, colors, 6 * seg);
+        color(Math.floor(b / perCurve), b, colors, 6 * seg + 3);
+        seg++;
+      }
+    }
+    curve0 += n;
+  }
+  return { segments, colors };
+}
+
+/** Positions on the curves given by `points` (all splines) at the rig's sample parameters (k + ½)/S. */
+export function curveSamples(doc: SvgDocument, points: Float64Array, perCurve: number): Float64Array {
+  let curves = 0;
+  for (const s of doc.splines) curves += segmentCount(s);
+  const out = new Float64Array(curves * perCurve * 2);
+  let at = 0, o = 0;
+  for (const s of doc.splines) {
+    const n = segmentCount(s), count = s.points.length / 2;
+    for (let k = 0; k < n; k++) {
+      const i0 = at + 2 * (3 * k), i1 = at + 2 * (3 * k + 1), i2 = at + 2 * (3 * k + 2), i3 = at + 2 * ((3 * k + 3) % count);
+      for (let j = 0; j < perCurve; j++) {
+        const t = (j + 0.5) / perCurve, u = 1 - t;
+        const b0 = u * u * u, b1 = 3 * u * u * t, b2 = 3 * u * t * t, b3 = t * t * t;
+        out[o++] = b0 * points[i0] + b1 * points[i1] + b2 * points[i2] + b3 * points[i3];
+        out[o++] = b0 * points[i0 + 1] + b1 * points[i1 + 1] + b2 * points[i2 + 1] + b3 * points[i3 + 1];
+      }
+    }
+    at += s.points.length;
+  }
+  return out;
+}
+
+/** sRGB of a '#rrggbb' color. */
+function rgb(hex: string): Float32Array {
+  const out = new Float32Array(3);
+  new Ramp([hex, hex]).srgbInto(0, out, 0);
+  return out;
+}
+
+/**
+ * Skin mode's curves over the drawing, as ribbons of constant screen width: the target (dashed,
+ * optionally colored by the per-curve error, red at the maximum … purple at the minimum, as in the
+ * paper, here on the scale of RMS distance), the naive baseline's outline, and the selected handle's weight field along the curves.
+ */
+export class CurveLayers {
+  readonly group = new Group();
+  private readonly field = new Ribbons(5, null, 50);
+  private readonly naive = new Ribbons(1.75, null, 51);
+  private readonly target = new Ribbons(1.75, { dash: 7, gap: 5 }, 52);
+
+  constructor(private readonly view: View2D) {
+    for (const r of [this.field, this.naive, this.target]) this.group.add(r.mesh);
+    this.group.name = 'skin-curves';
+    view.overlayLayer.add(this.group);
+    this.viewChanged();
+  }
+
+  /** Keeps line widths in pixels and dashes a constant length on screen. */
+  viewChanged(): void {
+    for (const r of [this.field, this.naive, this.target]) r.setScale(this.view.viewport.scale);
+  }
+
+  update(data: CurveLayerData | null): void {
+    this.setTarget(data);
+    this.setNaive(data);
+    this.setField(data);
+    this.view.requestRender();
+  }
+
+  /** Drawn segment counts per layer (for tests). */
+  get counts(): { target: number; naive: number; field: number } {
+    return { target: this.target.count, naive: this.naive.count, field: this.field.count };
+  }
+
+  private setTarget(data: CurveLayerData | null): void {
+    if (!data?.target) return this.target.hide();
+    const heat = data.heat;
+    // Normalized by the largest error, but never by less than (1e-6 of the drawing's size)², far
+    // above rounding: a pose fitted exactly (at rest) stays at the minimum color, not noise.
+    let max = (1e-6 * data.doc.size) ** 2;
+    if (heat) for (const e of heat) if (e > max) max = e;
+    const plain = rgb(SKIN_COLORS.target);
+    const { segments, colors } = sampleSegments(data.doc, data.perCurve, data.target, (curve, _k, out, at) => {
+      // The square root: colors go with the curve's RMS distance, so one bad curve does not
+      // leave all the others at the bottom of the scale.
+      if (heat) HEAT.srgbInto(Math.sqrt(heat[curve] / max), out, at);
+      else out.set(plain, at);
+    });
+    this.target.set(segments, colors);
+  }
+
+  private setNaive(data: CurveLayerData | null): void {
+    if (!data?.naive) return this.naive.hide();
+    const xy: number[] = [];
+    let at = 0;
+    const tolerance = 0.25 / this.view.viewport.scale;
+    for (const s of data.doc.splines) {
+      const points = data.naive.subarray(at, at + s.points.length);
+      at += s.points.length;
+      const line = flattenSpline({ closed: s.closed, points, continuity: [] }, tolerance, 48);
+      for (let i = 0; i + 1 < line.length; i++) xy.push(line[i].x, line[i].y, line[i + 1].x, line[i + 1].y);
+    }
+    const colors = new Float32Array((xy.length / 4) * 6);
+    const c = rgb(SKIN_COLORS.naive);
+    for (let i = 0; i < colors.length; i += 3) colors.set(c, i);
+    this.naive.set(new Float32Array(xy), colors);
+  }
+
+  private setField(data: CurveLayerData | null): void {
+    const f = data?.field;
+    if (!data || !f) return this.field.hide();
+    const { segments, colors } = sampleSegments(data.doc, data.perCurve, f.positions, (_c, k, out, at) => WEIGHT.srgbInto(f.weights[k], out, at));
+    this.field.set(segments, colors);
+  }
+
+  dispose(): void {
+    for (const r of [this.field, this.naive, this.target]) r.dispose();
+    this.group.removeFromParent();
+  }
+}
