@@ -8,7 +8,7 @@ import os from 'node:os';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
-import { skinAccuracy, skinSpeed } from './skin.mjs';
+import { skinAccuracy, skinSpeed, skinWeightsSpeed } from './skin.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
 const data = join(root, '../shared/data');
@@ -96,11 +96,12 @@ const size = {
 // ---- skinning ---------------------------------------------------------------------------------
 const skin = skinSpeed(data, time);
 const accuracy = skinAccuracy(data);
+const weightsSpeed = skinWeightsSpeed(data);
 
 // ---- report -----------------------------------------------------------------------------------
 const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, ${(os.totalmem() / 2 ** 30).toFixed(0)} GiB, Node ${process.version}, ${os.platform()} ${os.release()}`;
 const date = new Date().toISOString().slice(0, 10);
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy }, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -157,6 +158,11 @@ Speed on ${skin.file.replace('svg/', '')} (${skin.curves} curves), ${skin.handle
 | ${f(skin.precompute_ms, 0)} | ${f(skin.update_ms, 3)} | ${f(skin.relax_ms, 0)} | ${skin.bytes_allocated_by_1000_updates} |
 
 Budgets: precompute ≤ 1 s, update ≤ 2 ms, relax ≤ 300 ms (the paper, Python, 9.5k curves: 42 s, 0.1 s, 16 s).
+
+Automatic weights on the same drawing, ${weightsSpeed.handles} handles, a ${weightsSpeed.triangles}-triangle domain (built in
+${f(weightsSpeed.domain_ms, 0)} ms), each total including the domain, the solve and evaluation at the
+${skin.curves * 100} curve samples and the control points: harmonic **${f(weightsSpeed.harmonic_total_ms, 0)} ms**,
+BBW **${f(weightsSpeed.bbw_total_ms, 0)} ms** (budget for BBW on 20k triangles with 8 handles: 5 s).
 
 Accuracy on every shared character: handles spread over the artwork (farthest points), 5 random
 poses each (every handle rotated about itself by up to ±60°), Shepard weights. RMS distance to

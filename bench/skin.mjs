@@ -2,7 +2,7 @@
 // the fit against the paper's baselines on every shared character.
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { SkinRig, memory, parseSVG } from '../dist/index.js';
+import { SkinRig, buildDomain, domainWeights, memory, outlineSamples, parseSVG } from '../dist/index.js';
 
 /** Deterministic PRNG (mulberry32). */
 export function rng(seed) {
@@ -101,4 +101,22 @@ export function skinAccuracy(data, poses = 5) {
     }
   }
   return rows;
+}
+
+/** BBW and harmonic weights on a ~20k-triangle domain of the road runner with 8 handles. */
+export function skinWeightsSpeed(data) {
+  const rel = 'svg/illustrations/oc_road_runner_car.svg';
+  const doc = parseSVG(readFileSync(join(data, rel), 'utf8'));
+  const handles = spreadHandles(doc, 8);
+  const out = { file: rel, handles: 8 };
+  let t0 = performance.now();
+  const domain = buildDomain(outlineSamples(doc), handles, { targetTriangles: 20000 });
+  out.domain_ms = performance.now() - t0;
+  out.triangles = domain.triangles.length / 3;
+  for (const kind of ['harmonic', 'bbw']) {
+    t0 = performance.now();
+    domainWeights(doc, handles, kind, { targetTriangles: 20000 });
+    out[`${kind}_total_ms`] = performance.now() - t0;
+  }
+  return out;
 }
