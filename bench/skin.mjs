@@ -2,7 +2,7 @@
 // the fit against the paper's baselines on every shared character.
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { SkinRig, buildDomain, domainWeights, memory, outlineSamples, parseSVG } from '../dist/index.js';
+import { SkinRig, SkinWeights, buildDomain, domainWeights, memory, outlineSamples, parseSVG } from '../dist/index.js';
 
 /** Deterministic PRNG (mulberry32). */
 export function rng(seed) {
@@ -114,6 +114,13 @@ export function skinWeightsSpeed(data) {
   out.domain_ms = performance.now() - t0;
   out.triangles = domain.triangles.length / 3;
   for (const kind of ['harmonic', 'bbw']) {
+    const solves = [];
+    for (let i = 0; i < 3; i++) {
+      t0 = performance.now();
+      SkinWeights.solve(domain, kind).dispose();
+      solves.push(performance.now() - t0);
+    }
+    out[`${kind}_solve_ms`] = median(solves);
     t0 = performance.now();
     domainWeights(doc, handles, kind, { targetTriangles: 20000 });
     out[`${kind}_total_ms`] = performance.now() - t0;
