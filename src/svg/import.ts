@@ -131,14 +131,15 @@ function rootViewport(root: Element, name: string) {
   return { width: dim('width'), height: dim('height'), viewBox };
 }
 
-function describe(el: Element): string {
-  const id = el.getAttribute('id');
-  const line = (el as unknown as { lineNumber?: number }).lineNumber;
-  return `<${el.localName}${id ? ` id="${id}"` : ''}>${line ? ` at line ${line}` : ''}`;
-}
-
+/** Line of an element in its file (xmldom's locator), 0 if unknown. */
 function lineOf(el: Element): number {
   return (el as unknown as { lineNumber?: number }).lineNumber ?? 0;
+}
+
+function describe(el: Element): string {
+  const id = el.getAttribute('id');
+  const line = lineOf(el);
+  return `<${el.localName}${id ? ` id="${id}"` : ''}>${line ? ` at line ${line}` : ''}`;
 }
 
 class Builder {

@@ -61,7 +61,7 @@ class SkinRigHandle {
   // Baseline control points for the current transforms (method: 1 all, 2 interpolated, 3 Jacobian).
   val baseline(int method) {
     const double* p = rig_.baseline(SkinMethod(method), transforms_.data());
-    return val(typed_memory_view(size_t(2 * rig_.control_points().size() / 2), p));
+    return val(typed_memory_view(rig_.control_points().size(), p));
   }
 
   // Flexible relax from the rigid fit for the current transforms; energies in relaxEnergies().

@@ -259,6 +259,7 @@ void SkinRig::build_rhs(const double* transforms, Eigen::VectorXd& rhs) const {
 }
 
 const double* SkinRig::baseline(SkinMethod method, const double* T) {
+  if (method == SkinMethod::Fit) return update(T);
   const int N = rest_.point_count(), H = handles_;
   const double* P = rest_.points.data();
   // s at p with the weights of point k: Σ_i w_i T_i [p; 1].
@@ -272,10 +273,7 @@ const double* SkinRig::baseline(SkinMethod method, const double* T) {
     }
   };
   for (int k = 0; k < N; ++k) blend(k, P[2 * k], P[2 * k + 1], &baseline_[2 * k]);
-  if (method == SkinMethod::NaiveAll || method == SkinMethod::Fit) {
-    if (method == SkinMethod::Fit) return update(T);
-    return baseline_.data();
-  }
+  if (method == SkinMethod::NaiveAll) return baseline_.data();
   for (int s = 0; s < rest_.spline_count(); ++s) {
     const int base = rest_.start[s], count = rest_.count[s];
     for (int l = 0; l < count; ++l) {

@@ -29,6 +29,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
 #include <string>
 #include <vector>
 
