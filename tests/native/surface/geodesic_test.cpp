@@ -1,0 +1,149 @@
+// Mesh building and locally shortest paths against closed forms.
+#include "surface/geodesic.h"
+#include "surface/tangent.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace splinekit::surface {
+namespace {
+
+using testing::Arrays;
+
+MeshPoint random_point(const TriMesh& mesh, std::mt19937& rng) {
+  std::uniform_int_distribution<int> face(0, static_cast<int>(mesh.triangles.size()) - 1);
+  std::uniform_real_distribution<double> u(0, 1);
+  double a = u(rng), b = u(rng);
+  if (a + b > 1) a = 1 - a, b = 1 - b;
+  return {face(rng), Vec2(a, b)};
+}
+
+// The point of `mesh` at position p (a vertex within 1e-9), as a vertex point.
+MeshPoint vertex_at(const TriMesh& mesh, const Vec3& p) {
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    if ((mesh.positions[v] - p).norm() < 1e-9) return vertex_point(mesh, static_cast<int>(v));
+  ADD_FAILURE() << "no vertex at " << p.transpose();
+  return {};
+}
+
+TEST(SurfaceMesh, WeldsDropsAndReports) {
+  // Two triangles sharing an edge, written with duplicated positions, plus an unused vertex.
+  const std::vector<double> p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 5, 5, 5};
+  const std::vector<int> t = {0, 1, 2, 3, 4, 5};
+  TriMesh mesh;
+  std::string error;
+  ASSERT_EQ(build_mesh(p.data(), 7, t.data(), 2, mesh, error), MeshStatus::kOk);
+  EXPECT_EQ(mesh.report.welded_vertices, 2);
+  EXPECT_EQ(mesh.report.unreferenced_vertices, 1);
+  EXPECT_EQ(mesh.report.used_vertices, 4);
+  EXPECT_EQ(mesh.adjacency[0][1], 1);  // edge (1, 2) meets the second face
+  EXPECT_EQ(mesh.report.boundary_loops, 1);
+  EXPECT_EQ(mesh.report.components, 1);
+  EXPECT_EQ(mesh.mesh_vertex[3], mesh.mesh_vertex[1]);
+  EXPECT_EQ(mesh.mesh_vertex[6], -1);
+}
+
+TEST(SurfaceMesh, OrientsFacesAndKeepsFilePoints) {
+  // The second face is wound against the first; its points keep their file meaning.
+  const std::vector<double> p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+  const std::vector<int> t = {0, 1, 2, 1, 2, 3};
+  TriMesh mesh;
+  std::string error;
+  ASSERT_EQ(build_mesh(p.data(), 4, t.data(), 2, mesh, error), MeshStatus::kOk);
+  EXPECT_EQ(mesh.report.flipped_faces, 1);
+  const MeshPoint file{1, Vec2(0.2, 0.3)};  // 0.5*p1 + 0.2*p2 + 0.3*p3
+  const Vec3 expected = 0.5 * Vec3(1, 0, 0) + 0.2 * Vec3(0, 1, 0) + 0.3 * Vec3(1, 1, 0);
+  EXPECT_NEAR((eval_position(mesh, to_mesh_point(mesh, file)) - expected).norm(), 0, 1e-15);
+  const MeshPoint back = to_file_point(mesh, to_mesh_point(mesh, file));
+  EXPECT_DOUBLE_EQ(back.uv.x(), 0.2);
+  EXPECT_DOUBLE_EQ(back.uv.y(), 0.3);
+}
+
+TEST(SurfaceMesh, ReportsNonManifoldEdgesAndSplitsBowties) {
+  // Three faces on one edge (0, 1), and two fans touching at vertex 5 only.
+  const std::vector<double> p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 3, 0, 0, 4, 1, 0, 4, -1, 0, 2, 1, 0, 2, -1, 0};
+  const std::vector<int> t = {0, 1, 2, 1, 0, 3, 0, 1, 4, 5, 6, 7, 5, 8, 9};
+  TriMesh mesh;
+  std::string error;
+  ASSERT_EQ(build_mesh(p.data(), 10, t.data(), 5, mesh, error), MeshStatus::kOk);
+  EXPECT_EQ(mesh.report.non_manifold_edges, 1);
+  // Vertex 5, and vertices 0 and 1 whose faces fall apart once the non-manifold edge is cut.
+  EXPECT_EQ(mesh.report.non_manifold_vertices, 3);
+  EXPECT_NE(mesh.triangles[3][0], mesh.triangles[4][0]);  // vertex 5 split per fan
+  EXPECT_EQ(mesh.file_vertex[mesh.triangles[3][0]], 5);
+  EXPECT_EQ(mesh.file_vertex[mesh.triangles[4][0]], 5);
+}
+
+TEST(SurfaceMesh, RejectsBadInputNamingIt) {
+  const std::vector<double> p = {0, 0, 0, 1, 0, 0, 0, std::nan(""), 0};
+  const std::vector<int> t = {0, 1, 2};
+  TriMesh mesh;
+  std::string error;
+  EXPECT_EQ(build_mesh(p.data(), 3, t.data(), 1, mesh, error), MeshStatus::kInvalidInput);
+  EXPECT_NE(error.find("vertex 2"), std::string::npos);
+  const std::vector<double> q = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const std::vector<int> bad = {0, 1, 3};
+  EXPECT_EQ(build_mesh(q.data(), 3, bad.data(), 1, mesh, error), MeshStatus::kInvalidInput);
+  EXPECT_NE(error.find("face 0"), std::string::npos);
+}
+
+TEST(ShortestPath, IsTheStraightSegmentOnAPlane) {
+  const TriMesh mesh = testing::build(testing::planar_grid(24));
+  GeodesicSolver solver(mesh);
+  std::mt19937 rng(3);
+  std::vector<Vec3> positions;
+  for (int trial = 0; trial < 200; ++trial) {
+    const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
+    GeodesicPath path;
+    ASSERT_TRUE(solver.shortest_path(a, b, path));
+    const Vec3 pa = eval_position(mesh, a), pb = eval_position(mesh, b);
+    EXPECT_NEAR(path_length(mesh, path), (pb - pa).norm(), 1e-9) << "trial " << trial;
+    // Every crossing lies on the segment, in order.
+    path_positions(mesh, path, positions);
+    for (const Vec3& p : positions) EXPECT_NEAR((p - pa).cross(pb - pa).norm(), 0, 1e-9 * (pb - pa).norm() + 1e-12);
+    for (size_t i = 0; i + 1 < path.strip.size(); ++i) EXPECT_GE(edge_to(mesh, path.strip[i], path.strip[i + 1]), 0);
+  }
+}
+
+TEST(ShortestPath, MatchesUnfoldingsOnACube) {
+  const TriMesh mesh = testing::build(testing::cube(4));
+  GeodesicSolver solver(mesh);
+  struct Case {
+    Vec3 a, b;
+    double length;
+  } cases[] = {
+      {{0.5, 0.5, 0}, {1, 0.5, 0.5}, 1.0},                 // across one edge
+      {{0, 0, 0}, {1, 1, 1}, std::sqrt(5.0)},               // corner to opposite corner
+      {{0.5, 0.5, 0}, {0.5, 0.5, 1}, 2.0},                  // opposite face centres
+      {{0.25, 0, 0}, {0, 0.75, 1}, std::sqrt(1.0 + 1.0)},   // wraps around the edge x = y = 0... see below
+  };
+  // The last case: from (0.25, 0, 0) on the bottom edge to (0, 0.75, 1) on the top edge of face x = 0:
+  // unfold faces y = 0 and x = 0 into one plane: (0.25, 0) -> (-0.75, 1), length sqrt(1 + 1).
+  for (const Case& c : cases) {
+    GeodesicPath path;
+    ASSERT_TRUE(solver.shortest_path(vertex_at(mesh, c.a), vertex_at(mesh, c.b), path));
+    EXPECT_NEAR(path_length(mesh, path), c.length, 1e-9) << c.a.transpose() << " -> " << c.b.transpose();
+  }
+}
+
+TEST(ShortestPath, EvaluatesAndSplitsByArcLength) {
+  const TriMesh mesh = testing::build(testing::planar_grid(16));
+  GeodesicSolver solver(mesh);
+  const MeshPoint a{3, Vec2(0.2, 0.2)}, b{400, Vec2(0.3, 0.5)};
+  GeodesicPath path;
+  ASSERT_TRUE(solver.shortest_path(a, b, path));
+  const Vec3 pa = eval_position(mesh, a), pb = eval_position(mesh, b);
+  for (double t : {0.0, 0.1, 0.37, 0.5, 0.99, 1.0})
+    EXPECT_NEAR((eval_position(mesh, eval_path(mesh, path, t)) - (pa + t * (pb - pa))).norm(), 0, 1e-9);
+  const GeodesicPath half = sub_path(mesh, path, 0.25, 0.75);
+  EXPECT_NEAR(path_length(mesh, half), 0.5 * (pb - pa).norm(), 1e-9);
+  const GeodesicPath back = reversed(mesh, path);
+  EXPECT_NEAR((eval_position(mesh, eval_path(mesh, back, 0.3)) - (pa + 0.7 * (pb - pa))).norm(), 0, 1e-9);
+  const Tangent t0 = start_tangent(mesh, path);
+  EXPECT_NEAR((t0.dir - (pb - pa).normalized()).norm(), 0, 1e-9);
+}
+
+}  // namespace
+}  // namespace splinekit::surface

@@ -1,0 +1,165 @@
+// Small meshes with known geometry for the surface tests: planar grids, a cube, a cylinder, and a
+// reader for the shared OBJ/PLY test data.
+#pragma once
+
+#include "surface/mesh.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace splinekit::surface::testing {
+
+struct Arrays {
+  std::vector<double> positions;
+  std::vector<int> triangles;
+  int vertices() const { return static_cast<int>(positions.size() / 3); }
+  int faces() const { return static_cast<int>(triangles.size() / 3); }
+};
+
+inline TriMesh build(const Arrays& a) {
+  TriMesh mesh;
+  std::string error;
+  if (build_mesh(a.positions.data(), a.vertices(), a.triangles.data(), a.faces(), mesh, error) != MeshStatus::kOk)
+    throw std::runtime_error(error);
+  return mesh;
+}
+
+// An n x n grid over [0, size]^2 in the plane z = 0 with interior vertices jittered by `jitter`
+// cells and alternating diagonals.
+inline Arrays planar_grid(int n, double size = 1, double jitter = 0.25, unsigned seed = 7) {
+  Arrays a;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-jitter, jitter);
+  const double h = size / n;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const bool interior = i > 0 && j > 0 && i < n && j < n;
+      a.positions.insert(a.positions.end(), {h * (i + (interior ? u(rng) : 0)), h * (j + (interior ? u(rng) : 0)), 0.0});
+    }
+  auto id = [&](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a00 = id(i, j), a10 = id(i + 1, j), a01 = id(i, j + 1), a11 = id(i + 1, j + 1);
+      if ((i + j) % 2 == 0) {
+        a.triangles.insert(a.triangles.end(), {a00, a10, a11, a00, a11, a01});
+      } else {
+        a.triangles.insert(a.triangles.end(), {a00, a10, a01, a10, a11, a01});
+      }
+    }
+  return a;
+}
+
+// The surface of the cube [0, 1]^3, each face an n x n grid.
+inline Arrays cube(int n) {
+  Arrays a;
+  std::vector<std::array<double, 3>> pts;
+  auto vertex = [&](double x, double y, double z) {
+    for (size_t i = 0; i < pts.size(); ++i)
+      if (std::abs(pts[i][0] - x) + std::abs(pts[i][1] - y) + std::abs(pts[i][2] - z) < 1e-12) return static_cast<int>(i);
+    pts.push_back({x, y, z});
+    return static_cast<int>(pts.size() - 1);
+  };
+  // Each face: origin o, axes u, v with u x v pointing outwards.
+  const double faces[6][9] = {{0, 0, 0, 0, 1, 0, 1, 0, 0}, {0, 0, 1, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 1, 0, 0, 0, 0, 1},
+                              {0, 1, 0, 0, 0, 1, 1, 0, 0}, {0, 0, 0, 0, 0, 1, 0, 1, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  for (const auto& f : faces) {
+    std::vector<int> ids((n + 1) * (n + 1));
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const double s = double(i) / n, t = double(j) / n;
+        ids[j * (n + 1) + i] = vertex(f[0] + s * f[3] + t * f[6], f[1] + s * f[4] + t * f[7], f[2] + s * f[5] + t * f[8]);
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a00 = ids[j * (n + 1) + i], a10 = ids[j * (n + 1) + i + 1], a01 = ids[(j + 1) * (n + 1) + i],
+                  a11 = ids[(j + 1) * (n + 1) + i + 1];
+        a.triangles.insert(a.triangles.end(), {a00, a10, a11, a00, a11, a01});
+      }
+  }
+  for (const auto& p : pts) a.positions.insert(a.positions.end(), {p[0], p[1], p[2]});
+  return a;
+}
+
+// An open cylinder of radius r and height h around the z axis: `around` x `up` quads, split.
+inline Arrays cylinder(int around, int up, double r = 1, double h = 2) {
+  Arrays a;
+  const double pi = 3.14159265358979323846;
+  for (int j = 0; j <= up; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double phi = 2 * pi * i / around;
+      a.positions.insert(a.positions.end(), {r * std::cos(phi), r * std::sin(phi), h * j / up});
+    }
+  for (int j = 0; j < up; ++j)
+    for (int i = 0; i < around; ++i) {
+      const int a00 = j * around + i, a10 = j * around + (i + 1) % around, a01 = (j + 1) * around + i,
+                a11 = (j + 1) * around + (i + 1) % around;
+      a.triangles.insert(a.triangles.end(), {a00, a10, a11, a00, a11, a01});
+    }
+  return a;
+}
+
+// The shared test data folder (../shared/data next to the repository).
+inline std::string shared_data(const std::string& relative) {
+  std::string here = __FILE__;  // <repo>/tests/native/surface/test_meshes.h
+  for (int i = 0; i < 4; ++i) here = here.substr(0, here.find_last_of('/'));
+  return here + "/../shared/data/" + relative;
+}
+
+// Positions and triangles of an OBJ (v/f only, polygons fanned) or binary little-endian PLY.
+inline Arrays read_mesh(const std::string& path) {
+  Arrays a;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open " + path);
+  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply") {
+    std::string line;
+    int nv = 0, nf = 0;
+    while (std::getline(in, line)) {
+      if (line.rfind("element vertex", 0) == 0) nv = std::stoi(line.substr(15));
+      if (line.rfind("element face", 0) == 0) nf = std::stoi(line.substr(13));
+      if (line.rfind("end_header", 0) == 0) break;
+    }
+    // Assumes float x y z and uchar count + int indices (the shared PLY's layout).
+    for (int i = 0; i < nv; ++i) {
+      float p[3];
+      in.read(reinterpret_cast<char*>(p), sizeof p);
+      a.positions.insert(a.positions.end(), {p[0], p[1], p[2]});
+    }
+    for (int f = 0; f < nf; ++f) {
+      unsigned char count;
+      in.read(reinterpret_cast<char*>(&count), 1);
+      std::vector<int> ids(count);
+      in.read(reinterpret_cast<char*>(ids.data()), 4 * count);
+      for (int k = 1; k + 1 < count; ++k) a.triangles.insert(a.triangles.end(), {ids[0], ids[k], ids[k + 1]});
+    }
+    return a;
+  }
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.size() < 2) continue;
+    if (line[0] == 'v' && line[1] == ' ') {
+      std::istringstream s(line.substr(2));
+      double x, y, z;
+      s >> x >> y >> z;
+      a.positions.insert(a.positions.end(), {x, y, z});
+    } else if (line[0] == 'f' && line[1] == ' ') {
+      std::istringstream s(line.substr(2));
+      std::string token;
+      std::vector<int> ids;
+      while (s >> token) {
+        const int id = std::stoi(token.substr(0, token.find('/')));
+        ids.push_back(id < 0 ? a.vertices() + id : id - 1);
+      }
+      for (size_t k = 1; k + 1 < ids.size(); ++k) a.triangles.insert(a.triangles.end(), {ids[0], ids[k], ids[k + 1]});
+    }
+  }
+  return a;
+}
+
+}  // namespace splinekit::surface::testing

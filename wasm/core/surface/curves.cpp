@@ -1,0 +1,358 @@
+#include "surface/curves.h"
+
+#include "surface/tangent.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace splinekit::surface {
+
+namespace {
+
+bool same_point(const TriMesh& mesh, const MeshPoint& a, const MeshPoint& b) {
+  return (eval_position(mesh, a) - eval_position(mesh, b)).norm() <= 1e-12 * mesh.scale;
+}
+
+// OLR stencils: point i of level n+1 from the N points of level n (global indices). `avg(j, w)` is
+// A(P_j, P_{j+1}; w); `mix(x, y)` is A(x, y; 1/2).
+template <class Pt, class Avg, class Mix>
+MeshPoint olr_point(int level, int N, int i, Pt pt, Avg avg, Mix mix) {
+  const int M = 2 * N - 3;
+  if (level == 0) {  // Bézier halves as a B-spline: P0, midpoints, P3
+    if (i == 0) return pt(0);
+    if (i == 4) return pt(3);
+    return avg(i - 1, 0.5);
+  }
+  if (level == 1) {  // knots 0000 ½ 1111 -> 0000 ¼ ½ ¾ 1111 (Boehm): 3/16 10/16 3/16 in the middle
+    switch (i) {
+      case 0: return pt(0);
+      case 1: return avg(0, 0.5);
+      case 2: return avg(1, 0.25);
+      case 3: return mix(avg(1, 0.625), avg(2, 0.375));
+      case 4: return avg(2, 0.75);
+      case 5: return avg(3, 0.5);
+      default: return pt(4);
+    }
+  }
+  // Eq. 10 at the ends (and its mirror image), eq. 9 in the middle.
+  if (i == 0) return pt(0);
+  if (i == 1) return avg(0, 0.5);
+  if (i == 2) return avg(1, 0.25);
+  if (i == 3) return mix(avg(1, 0.625), avg(2, 0.25));
+  if (i == M - 1) return pt(N - 1);
+  if (i == M - 2) return avg(N - 2, 0.5);
+  if (i == M - 3) return avg(N - 3, 0.75);
+  if (i == M - 4) return mix(avg(N - 3, 0.375), avg(N - 4, 0.75));
+  if (i % 2 == 0) return avg(i / 2, 0.5);
+  const int j = (i - 1) / 2;
+  return mix(avg(j, 0.75), avg(j + 1, 0.25));
+}
+
+// Knot u_k of the open-uniform knot vector of level n (N = 2^n + 3 control points).
+double olr_knot(int level, int k) {
+  const int N = (1 << level) + 3;
+  if (k <= 3) return 0;
+  if (k >= N) return 1;
+  return std::ldexp(static_cast<double>(k - 3), -level);
+}
+
+}  // namespace
+
+GeodesicPath CurveTracer::path(const MeshPoint& a, const MeshPoint& b) {
+  GeodesicPath p;
+  ++stats.shortest_paths;
+  if (!solver_.shortest_path(a, b, p)) {
+    // Unreachable (another component): a degenerate path that stays at a.
+    p = GeodesicPath{a, a, {a.face}, {}};
+  }
+  return p;
+}
+
+MeshPoint CurveTracer::average(const MeshPoint& a, const MeshPoint& b, double w) {
+  if (w <= 0) return a;
+  if (w >= 1) return b;
+  return eval_path(solver_.mesh(), path(a, b), w);
+}
+
+void CurveTracer::append_path(const GeodesicPath& p, std::vector<MeshPoint>& polyline) {
+  static thread_local std::vector<MeshPoint> points;
+  path_points(solver_.mesh(), p, points);
+  size_t first = 0;
+  if (!polyline.empty() && same_point(solver_.mesh(), polyline.back(), points.front())) first = 1;
+  polyline.insert(polyline.end(), points.begin() + first, points.end());
+}
+
+void CurveTracer::append_path(const MeshPoint& a, const MeshPoint& b, std::vector<MeshPoint>& polyline) {
+  append_path(path(a, b), polyline);
+}
+
+// ---- RDC ----------------------------------------------------------------------------------------
+
+CurveTracer::RdcNode CurveTracer::rdc_root(const ControlPolygon& polygon) {
+  RdcNode node;
+  for (int i = 0; i < 3; ++i) node.sides[i] = path(polygon[i], polygon[i + 1]);
+  return node;
+}
+
+void CurveTracer::rdc_split(const RdcNode& node, RdcNode& left, RdcNode& right) {
+  const TriMesh& mesh = solver_.mesh();
+  const MeshPoint q0 = eval_path(mesh, node.sides[0], 0.5);
+  const MeshPoint q1 = eval_path(mesh, node.sides[1], 0.5);
+  const MeshPoint q2 = eval_path(mesh, node.sides[2], 0.5);
+  const GeodesicPath q01 = path(q0, q1), q12 = path(q1, q2);
+  const MeshPoint r0 = eval_path(mesh, q01, 0.5), r1 = eval_path(mesh, q12, 0.5);
+  const GeodesicPath r01 = path(r0, r1);
+  const double tm = 0.5 * (node.t0 + node.t1);
+  left.sides = {sub_path(mesh, node.sides[0], 0, 0.5), sub_path(mesh, q01, 0, 0.5), sub_path(mesh, r01, 0, 0.5)};
+  right.sides = {sub_path(mesh, r01, 0.5, 1), sub_path(mesh, q12, 0.5, 1), sub_path(mesh, node.sides[2], 0.5, 1)};
+  left.t0 = node.t0, left.t1 = tm;
+  right.t0 = tm, right.t1 = node.t1;
+}
+
+bool CurveTracer::rdc_flat(const RdcNode& node, double angle) {
+  const TriMesh& mesh = solver_.mesh();
+  for (int i = 0; i < 2; ++i) {
+    const Tangent in = end_tangent(mesh, node.sides[i]);
+    const Tangent out = start_tangent(mesh, node.sides[i + 1]);
+    if (in.dir.norm() == 0 || out.dir.norm() == 0) continue;
+    if (turning_angle(mesh, node.sides[i].end, in, out) >= angle) return false;
+  }
+  return true;
+}
+
+void CurveTracer::rdc_trace(const RdcNode& node, int level, const TraceOptions& options,
+                            std::vector<const RdcNode*>& stack, std::vector<MeshPoint>& polyline) {
+  const bool leaf = options.adaptive ? (level >= options.max_levels || rdc_flat(node, options.angle))
+                                     : level >= options.levels;
+  if (leaf) {
+    for (const GeodesicPath& side : node.sides) append_path(side, polyline);
+    return;
+  }
+  RdcNode left, right;
+  rdc_split(node, left, right);
+  rdc_trace(left, level + 1, options, stack, polyline);
+  rdc_trace(right, level + 1, options, stack, polyline);
+}
+
+CurveTracer::RdcNode CurveTracer::rdc_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options) {
+  RdcNode node = rdc_root(polygon);
+  for (int level = 0;; ++level) {
+    const bool leaf = options.adaptive ? (level >= options.max_levels || rdc_flat(node, options.angle))
+                                       : level >= options.levels;
+    if (leaf) return node;
+    RdcNode left, right;
+    rdc_split(node, left, right);
+    node = t <= left.t1 ? std::move(left) : std::move(right);
+  }
+}
+
+// ---- OLR ----------------------------------------------------------------------------------------
+
+void CurveTracer::olr_refine(const std::vector<MeshPoint>& old_points, int level, std::vector<MeshPoint>& out) {
+  const TriMesh& mesh = solver_.mesh();
+  const int N = static_cast<int>(old_points.size());
+  std::vector<GeodesicPath> sides(N - 1);
+  for (int j = 0; j + 1 < N; ++j) sides[j] = path(old_points[j], old_points[j + 1]);
+  auto pt = [&](int j) { return old_points[j]; };
+  auto avg = [&](int j, double w) { return eval_path(mesh, sides[j], w); };
+  auto mix = [&](const MeshPoint& x, const MeshPoint& y) { return average(x, y, 0.5); };
+  const int M = 2 * N - 3;
+  out.resize(M);
+  for (int i = 0; i < M; ++i) out[i] = olr_point(level, N, i, pt, avg, mix);
+}
+
+bool CurveTracer::polygon_flat(const MeshPoint* points, int count, double angle) {
+  const TriMesh& mesh = solver_.mesh();
+  GeodesicPath prev = path(points[0], points[1]);
+  for (int i = 1; i + 1 < count; ++i) {
+    GeodesicPath next = path(points[i], points[i + 1]);
+    const Tangent in = end_tangent(mesh, prev), out = start_tangent(mesh, next);
+    if (in.dir.norm() > 0 && out.dir.norm() > 0 && turning_angle(mesh, points[i], in, out) >= angle) return false;
+    prev = std::move(next);
+  }
+  return true;
+}
+
+void CurveTracer::olr_adaptive(const std::array<MeshPoint, 4>& points, int level, int interval,
+                               const TraceOptions& options, std::vector<MeshPoint>& out) {
+  if (level >= options.max_levels || (level > 0 && polygon_flat(points.data(), 4, options.angle))) {
+    if (out.empty()) {
+      out.insert(out.end(), points.begin(), points.end());
+    } else {
+      out.push_back(points[3]);
+    }
+    return;
+  }
+  // The five points of the two children (new indices 2m .. 2m+4).
+  const TriMesh& mesh = solver_.mesh();
+  const int N = (1 << level) + 3, m = interval;
+  std::array<GeodesicPath, 3> sides;
+  for (int j = 0; j < 3; ++j) sides[j] = path(points[j], points[j + 1]);
+  auto pt = [&](int j) { return points[j - m]; };
+  auto avg = [&](int j, double w) { return eval_path(mesh, sides[j - m], w); };
+  auto mix = [&](const MeshPoint& x, const MeshPoint& y) { return average(x, y, 0.5); };
+  std::array<MeshPoint, 5> next;
+  for (int i = 0; i < 5; ++i) next[i] = olr_point(level, N, 2 * m + i, pt, avg, mix);
+  olr_adaptive({next[0], next[1], next[2], next[3]}, level + 1, 2 * m, options, out);
+  olr_adaptive({next[1], next[2], next[3], next[4]}, level + 1, 2 * m + 1, options, out);
+}
+
+void CurveTracer::olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options,
+                           std::array<MeshPoint, 4>& points, int& level, int& interval) {
+  const TriMesh& mesh = solver_.mesh();
+  points = polygon;
+  interval = 0;
+  for (level = 0;; ++level) {
+    const bool leaf = options.adaptive
+                          ? (level >= options.max_levels || (level > 0 && polygon_flat(points.data(), 4, options.angle)))
+                          : level >= options.levels;
+    if (leaf) return;
+    const int N = (1 << level) + 3, m = interval;
+    std::array<GeodesicPath, 3> sides;
+    for (int j = 0; j < 3; ++j) sides[j] = path(points[j], points[j + 1]);
+    auto pt = [&](int j) { return points[j - m]; };
+    auto avg = [&](int j, double w) { return eval_path(mesh, sides[j - m], w); };
+    auto mix = [&](const MeshPoint& x, const MeshPoint& y) { return average(x, y, 0.5); };
+    const double mid = std::ldexp(2.0 * m + 1, -(level + 1));
+    const int child = t <= mid ? 0 : 1;
+    std::array<MeshPoint, 4> next;
+    for (int i = 0; i < 4; ++i) next[i] = olr_point(level, N, 2 * m + child + i, pt, avg, mix);
+    points = next;
+    interval = 2 * m + child;
+  }
+}
+
+// The Bézier polygon of interval m of level n: blossoms f(a,a,a), f(a,a,b), f(a,b,b), f(b,b,b) by the
+// de Boor recurrence with manifold averages.
+ControlPolygon CurveTracer::olr_bezier(const std::array<MeshPoint, 4>& points, int level, int m) {
+  const double a = olr_knot(level, m + 3), b = olr_knot(level, m + 4);
+  auto blossom = [&](double x1, double x2, double x3) {
+    const double xs[3] = {x1, x2, x3};
+    std::array<MeshPoint, 4> d = points;
+    for (int r = 1; r <= 3; ++r) {
+      for (int i = 3; i >= r; --i) {
+        const int I = m + i;
+        const double lo = olr_knot(level, I), hi = olr_knot(level, I + 4 - r);
+        const double alpha = hi > lo ? (xs[r - 1] - lo) / (hi - lo) : 0;
+        d[i] = average(d[i - 1], d[i], alpha);
+      }
+    }
+    return d[3];
+  };
+  return {blossom(a, a, a), blossom(a, a, b), blossom(a, b, b), blossom(b, b, b)};
+}
+
+// ---- Public -------------------------------------------------------------------------------------
+
+void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& points) {
+  points.assign(polygon.begin(), polygon.end());
+  if (options.scheme == Scheme::kOLR) {
+    if (options.adaptive) {
+      points.clear();
+      olr_adaptive(polygon, 0, 0, options, points);
+      return;
+    }
+    std::vector<MeshPoint> next;
+    for (int level = 0; level < options.levels; ++level) {
+      olr_refine(points, level, next);
+      points.swap(next);
+    }
+    return;
+  }
+  std::vector<MeshPoint> polyline;
+  std::vector<const RdcNode*> stack;
+  points.clear();
+  // The RDC polygon: the end points of every leaf's sides.
+  struct Collector {
+    static void run(CurveTracer& tracer, const RdcNode& node, int level, const TraceOptions& options,
+                    std::vector<MeshPoint>& out) {
+      const bool leaf = options.adaptive ? (level >= options.max_levels || tracer.rdc_flat(node, options.angle))
+                                         : level >= options.levels;
+      if (leaf) {
+        if (out.empty()) out.push_back(node.sides[0].start);
+        for (const GeodesicPath& side : node.sides) out.push_back(side.end);
+        return;
+      }
+      RdcNode left, right;
+      tracer.rdc_split(node, left, right);
+      run(tracer, left, level + 1, options, out);
+      run(tracer, right, level + 1, options, out);
+    }
+  };
+  Collector::run(*this, rdc_root(polygon), 0, options, points);
+}
+
+void CurveTracer::trace(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& polyline) {
+  polyline.clear();
+  if (options.scheme == Scheme::kRDC) {
+    std::vector<const RdcNode*> stack;
+    rdc_trace(rdc_root(polygon), 0, options, stack, polyline);
+    return;
+  }
+  subdivide(polygon, options, scratch_points_);
+  for (size_t i = 0; i + 1 < scratch_points_.size(); ++i) append_path(scratch_points_[i], scratch_points_[i + 1], polyline);
+}
+
+MeshPoint CurveTracer::eval(const ControlPolygon& polygon, double t, const TraceOptions& options) {
+  t = std::clamp(t, 0.0, 1.0);
+  if (t == 0) return polygon[0];
+  if (t == 1) return polygon[3];
+  ControlPolygon leaf;
+  double t0, t1;
+  if (options.scheme == Scheme::kRDC) {
+    const RdcNode node = rdc_leaf(polygon, t, options);
+    leaf = {node.sides[0].start, node.sides[1].start, node.sides[2].start, node.sides[2].end};
+    t0 = node.t0, t1 = node.t1;
+  } else {
+    std::array<MeshPoint, 4> points;
+    int level, interval;
+    olr_leaf(polygon, t, options, points, level, interval);
+    leaf = olr_bezier(points, level, interval);
+    t0 = olr_knot(level, interval + 3), t1 = olr_knot(level, interval + 4);
+  }
+  // Direct de Casteljau on the (short) leaf polygon.
+  const double s = (t - t0) / (t1 - t0);
+  const MeshPoint q0 = average(leaf[0], leaf[1], s), q1 = average(leaf[1], leaf[2], s), q2 = average(leaf[2], leaf[3], s);
+  return average(average(q0, q1, s), average(q1, q2, s), s);
+}
+
+void CurveTracer::split_leaf(const ControlPolygon& polygon, const ControlPolygon& leaf, double t0, double t1, double t,
+                             ControlPolygon& left, ControlPolygon& right) {
+  const TriMesh& mesh = solver_.mesh();
+  const double s = std::clamp((t - t0) / (t1 - t0), 0.0, 1.0);
+  const MeshPoint q0 = average(leaf[0], leaf[1], s), q1 = average(leaf[1], leaf[2], s), q2 = average(leaf[2], leaf[3], s);
+  const MeshPoint r0 = average(q0, q1, s), r1 = average(q1, q2, s);
+  const MeshPoint pt = average(r0, r1, s);
+  // Extends the geodesic from pt through x to `scale` times its length.
+  auto extend = [&](const MeshPoint& x, double scale) {
+    const GeodesicPath g = path(pt, x);
+    const Tangent dir = start_tangent(mesh, g);
+    const double len = path_length(mesh, g) * scale;
+    if (dir.dir.norm() == 0 || !(len > 0)) return x;
+    StraightestGeodesic out;
+    straightest_geodesic(mesh, pt, dir, len, out);
+    return out.end;
+  };
+  const double left_scale = t > t0 ? t / (t - t0) : 1;
+  const double right_scale = t1 > t ? (1 - t) / (t1 - t) : 1;
+  left = {polygon[0], average(polygon[0], polygon[1], t), extend(r0, left_scale), pt};
+  right = {pt, extend(r1, right_scale), average(polygon[2], polygon[3], t), polygon[3]};
+}
+
+void CurveTracer::split(const ControlPolygon& polygon, double t, const TraceOptions& options, ControlPolygon& left,
+                        ControlPolygon& right) {
+  t = std::clamp(t, 1e-6, 1 - 1e-6);
+  if (options.scheme == Scheme::kRDC) {
+    const RdcNode node = rdc_leaf(polygon, t, options);
+    const ControlPolygon leaf = {node.sides[0].start, node.sides[1].start, node.sides[2].start, node.sides[2].end};
+    split_leaf(polygon, leaf, node.t0, node.t1, t, left, right);
+    return;
+  }
+  std::array<MeshPoint, 4> points;
+  int level, interval;
+  olr_leaf(polygon, t, options, points, level, interval);
+  split_leaf(polygon, olr_bezier(points, level, interval), olr_knot(level, interval + 3), olr_knot(level, interval + 4), t,
+             left, right);
+}
+
+}  // namespace splinekit::surface

@@ -1,0 +1,89 @@
+// Cubic Bézier curves on meshes by subdivision (b/Surf §3.5–§4), built from the manifold average
+// A(P, Q; w) = γ_PQ(w), the point at fraction w of the shortest path from P to Q (§3.2, eq. 4).
+//   - RDC: recursive de Casteljau bisection (§3.5, §4.1): each step computes three shortest paths and
+//     splits the polygon into two sub-polygons made of halves of existing paths.
+//   - OLR: open-uniform Lane–Riesenfeld (§3.6, §4.2): midpoint insertion plus two smoothing steps,
+//     factored into pairwise averages (eq. 9 in the middle, eq. 10 at the ends, and the special
+//     stencils of the first two levels derived from Boehm knot insertion on the knot vector
+//     0000 1111).
+// Both trace uniformly (a fixed number of levels) or adaptively (stop where consecutive geodesic
+// segments of the polygon turn by less than an angle), evaluate a point at t, and split a curve at t
+// into two curves that interpolate its ends and the split point with the same tangents (§4.1.3).
+#pragma once
+
+#include "surface/geodesic.h"
+
+#include <array>
+#include <vector>
+
+namespace splinekit::surface {
+
+enum class Scheme { kRDC, kOLR };
+
+struct TraceOptions {
+  Scheme scheme = Scheme::kOLR;
+  bool adaptive = false;
+  int levels = 5;                 // uniform subdivision levels
+  double angle = 0.0872664626;    // adaptive threshold (radians; 5°)
+  int max_levels = 10;            // adaptive recursion bound (resolves cusps)
+};
+
+using ControlPolygon = std::array<MeshPoint, 4>;
+
+struct TraceStats {
+  int shortest_paths = 0;
+};
+
+class CurveTracer {
+ public:
+  explicit CurveTracer(GeodesicSolver& solver) : solver_(solver) {}
+
+  // The curve as a polyline on the mesh: P0, every point and edge crossing along the way, P3.
+  // Consecutive points share a face.
+  void trace(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& polyline);
+  // The subdivided control polygon (its points; consecutive ones joined by shortest paths).
+  void subdivide(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& points);
+  // The point at parameter t.
+  MeshPoint eval(const ControlPolygon& polygon, double t, const TraceOptions& options);
+  // Point insertion: two polygons (P0, ·, ·, P_t) and (P_t, ·, ·, P3).
+  void split(const ControlPolygon& polygon, double t, const TraceOptions& options, ControlPolygon& left,
+             ControlPolygon& right);
+
+  GeodesicSolver& solver() { return solver_; }
+  TraceStats stats;
+
+ private:
+  GeodesicPath path(const MeshPoint& a, const MeshPoint& b);
+  MeshPoint average(const MeshPoint& a, const MeshPoint& b, double w);
+
+  // RDC
+  struct RdcNode {
+    std::array<GeodesicPath, 3> sides;
+    double t0 = 0, t1 = 1;
+  };
+  RdcNode rdc_root(const ControlPolygon& polygon);
+  void rdc_split(const RdcNode& node, RdcNode& left, RdcNode& right);
+  bool rdc_flat(const RdcNode& node, double angle);
+  void rdc_trace(const RdcNode& node, int level, const TraceOptions& options, std::vector<const RdcNode*>& stack,
+                 std::vector<MeshPoint>& points);
+  RdcNode rdc_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options);
+
+  // OLR
+  void olr_refine(const std::vector<MeshPoint>& old_points, int level, std::vector<MeshPoint>& out);
+  void olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options, std::array<MeshPoint, 4>& points,
+                int& level, int& interval);
+  void olr_adaptive(const std::array<MeshPoint, 4>& points, int level, int interval, const TraceOptions& options,
+                    std::vector<MeshPoint>& out);
+  bool polygon_flat(const MeshPoint* points, int count, double angle);
+  ControlPolygon olr_bezier(const std::array<MeshPoint, 4>& points, int level, int interval);
+
+  void append_path(const MeshPoint& a, const MeshPoint& b, std::vector<MeshPoint>& polyline);
+  void append_path(const GeodesicPath& p, std::vector<MeshPoint>& polyline);
+  void split_leaf(const ControlPolygon& polygon, const ControlPolygon& leaf, double t0, double t1, double t,
+                  ControlPolygon& left, ControlPolygon& right);
+
+  GeodesicSolver& solver_;
+  std::vector<MeshPoint> scratch_points_;
+};
+
+}  // namespace splinekit::surface

@@ -1,0 +1,678 @@
+#include "surface/geodesic.h"
+
+#include "surface/unfold.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace splinekit::surface {
+
+// =================================================================================================
+// Phase (i): the refined dual graph and its search
+// =================================================================================================
+
+namespace {
+
+// A growable ring buffer: the deque of the SLF/LLL search.
+class RingDeque {
+ public:
+  bool empty() const { return size_ == 0; }
+  size_t size() const { return size_; }
+  int front() const { return data_[head_]; }
+  void clear() { head_ = size_ = 0; }
+  void push_back(int x) {
+    grow();
+    data_[(head_ + size_) & mask_] = x;
+    ++size_;
+  }
+  void push_front(int x) {
+    grow();
+    head_ = (head_ + mask_) & mask_;
+    data_[head_] = x;
+    ++size_;
+  }
+  int pop_front() {
+    const int x = data_[head_];
+    head_ = (head_ + 1) & mask_;
+    --size_;
+    return x;
+  }
+
+ private:
+  void grow() {
+    if (size_ < data_.size()) return;
+    std::vector<int> next(std::max<size_t>(64, 2 * data_.size()));
+    for (size_t i = 0; i < size_; ++i) next[i] = data_[(head_ + i) & mask_];
+    data_.swap(next);
+    head_ = 0;
+    mask_ = data_.size() - 1;
+  }
+  std::vector<int> data_;
+  size_t head_ = 0, size_ = 0, mask_ = 0;
+};
+
+bool contains_vertex(const TriMesh& mesh, int face, int v) { return corner_of(mesh, face, v) >= 0; }
+
+// Faces that contain a point: its face, the neighbour across the edge it lies on, or its vertex's fan.
+void faces_of_point(const TriMesh& mesh, const MeshPoint& p, std::vector<int>& faces) {
+  faces.clear();
+  const PointLocation where = locate(mesh, p);
+  if (where.kind == PointLocation::kVertex) {
+    bool closed;
+    vertex_fan(mesh, where.index, faces, closed);
+    if (std::find(faces.begin(), faces.end(), p.face) == faces.end()) faces.push_back(p.face);
+    return;
+  }
+  faces.push_back(p.face);
+  if (where.kind == PointLocation::kEdge && mesh.adjacency[p.face][where.index] >= 0)
+    faces.push_back(mesh.adjacency[p.face][where.index]);
+}
+
+// Cuts the loops out of a strip: when a face appears twice, the faces between are dropped.
+void remove_loops(std::vector<int>& strip, std::vector<int>& slot) {
+  size_t out = 0;
+  for (size_t i = 0; i < strip.size(); ++i) {
+    const int f = strip[i];
+    if (slot[f] >= 0) {
+      for (size_t j = slot[f] + 1; j < out; ++j) slot[strip[j]] = -1;
+      out = slot[f] + 1;
+      continue;
+    }
+    slot[f] = static_cast<int>(out);
+    strip[out++] = f;
+  }
+  strip.resize(out);
+  for (int f : strip) slot[f] = -1;
+}
+
+}  // namespace
+
+int DualGraph::edge_of_node(int node) const {
+  const int local = node - faces;
+  if (edge_offsets.empty()) return local / steiner;
+  return static_cast<int>(std::upper_bound(edge_offsets.begin(), edge_offsets.end(), local) - edge_offsets.begin()) - 1;
+}
+
+GeodesicSolver::GeodesicSolver(const TriMesh& mesh, const ShortestPathOptions& options)
+    : mesh_(mesh), options_(options) {
+  const int nf = static_cast<int>(mesh.triangles.size());
+  graph_.faces = nf;
+  graph_.steiner = std::max(1, options.steiner);
+  graph_.long_edge = options.long_edge_fraction * mesh.scale;
+  graph_.halfedge_edge.assign(3 * static_cast<size_t>(nf), -1);
+  std::vector<int> counts;
+  bool uniform = true;
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int g = mesh.adjacency[f][k];
+      if (g >= 0 && g < f) {  // numbered from the other side already
+        graph_.halfedge_edge[3 * f + k] = graph_.halfedge_edge[3 * g + edge_to(mesh, g, f)];
+        continue;
+      }
+      graph_.halfedge_edge[3 * f + k] = static_cast<int>(graph_.edge_halfedge.size());
+      graph_.edge_halfedge.push_back(3 * f + k);
+      const double len = (mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]).norm();
+      const int extra = len > graph_.long_edge ? static_cast<int>(std::ceil(len / graph_.long_edge)) - 1 : 0;
+      counts.push_back(std::max(graph_.steiner, extra));
+      uniform = uniform && counts.back() == graph_.steiner;
+    }
+  }
+  graph_.edges = static_cast<int>(graph_.edge_halfedge.size());
+  if (!uniform) {
+    graph_.edge_offsets.assign(1, 0);
+    for (int c : counts) graph_.edge_offsets.push_back(graph_.edge_offsets.back() + c);
+  }
+  const size_t nodes = graph_.nodes();
+  dist_.assign(nodes, std::numeric_limits<float>::infinity());
+  parent_.assign(nodes, -1);
+  state_.assign(nodes, 0);
+}
+
+size_t GeodesicSolver::bytes() const {
+  return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.edge_offsets.capacity()) * sizeof(int) +
+         dist_.capacity() * sizeof(float) + parent_.capacity() * sizeof(int) + state_.capacity() +
+         touched_.capacity() * sizeof(int);
+}
+
+// Position of graph node `node`: a face centroid, or a point along an edge.
+Vec3 GeodesicSolver::node_position(int node) const {
+  if (node < graph_.faces) {
+    const auto& t = mesh_.triangles[node];
+    return (mesh_.positions[t[0]] + mesh_.positions[t[1]] + mesh_.positions[t[2]]) / 3;
+  }
+  const int e = graph_.edge_of_node(node);
+  const int first = graph_.first_node(e), count = graph_.end_node(e) - first;
+  const int h = graph_.edge_halfedge[e];
+  const auto& t = mesh_.triangles[h / 3];
+  const double s = double(node - first + 1) / (count + 1);
+  return (1 - s) * mesh_.positions[t[h % 3]] + s * mesh_.positions[t[(h % 3 + 1) % 3]];
+}
+
+// The faces of a node: itself, or the one or two faces of its edge.
+static void node_faces(const TriMesh& mesh, const DualGraph& graph, int node, int faces[2]) {
+  if (node < graph.faces) {
+    faces[0] = node, faces[1] = -1;
+    return;
+  }
+  const int h = graph.edge_halfedge[graph.edge_of_node(node)];
+  faces[0] = h / 3;
+  faces[1] = mesh.adjacency[h / 3][h % 3];
+}
+
+int GeodesicSolver::link_face(int a, int b) const {
+  int fa[2], fb[2];
+  node_faces(mesh_, graph_, a, fa);
+  node_faces(mesh_, graph_, b, fb);
+  for (int x : fa)
+    for (int y : fb)
+      if (x >= 0 && x == y) return x;
+  return -1;
+}
+
+bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats) {
+  strip.clear();
+  const int nf = graph_.faces;
+  static thread_local std::vector<int> sources, targets;
+  faces_of_point(mesh_, a, sources);
+  faces_of_point(mesh_, b, targets);
+  for (int s : sources) {
+    if (std::find(targets.begin(), targets.end(), s) != targets.end()) {
+      strip.push_back(s);
+      return true;
+    }
+  }
+  const Vec3 pa = eval_position(mesh_, a);
+  const Vec3 pb = eval_position(mesh_, b);
+  // Positions and heuristics of the touched nodes (a node is looked at many times).
+  static thread_local std::vector<Eigen::Vector3f> cache;
+  static thread_local std::vector<float> heuristic;
+  if (cache.size() < dist_.size()) cache.resize(dist_.size()), heuristic.resize(dist_.size());
+
+  static thread_local RingDeque queue;
+  queue.clear();
+  double key_sum = 0;  // sum of (dist + heuristic) over queued nodes, for LLL
+  auto touch = [&](int node) {
+    if (state_[node] != 0) return;
+    state_[node] = 2;
+    touched_.push_back(node);
+    const Vec3 p = node_position(node);
+    cache[node] = p.cast<float>();
+    heuristic[node] = static_cast<float>((p - pb).norm());
+  };
+  auto key = [&](int node) { return dist_[node] + heuristic[node]; };
+  // Relaxes `node` from `from`; SLF puts improved nodes at the front or the back of the deque.
+  auto relax = [&](int node, int from, float d) {
+    touch(node);
+    if (d >= dist_[node]) return;
+    if (state_[node] == 1) {
+      key_sum -= dist_[node] - d;
+    } else {
+      key_sum += d + heuristic[node];
+      state_[node] = 1;
+      if (!queue.empty() && d + heuristic[node] < key(queue.front()))
+        queue.push_front(node);
+      else
+        queue.push_back(node);
+    }
+    dist_[node] = d;
+    parent_[node] = from;
+  };
+  // The nodes of face f: its centroid and the nodes on its edges (but those on `skip_edge`).
+  auto for_face_nodes = [&](int f, int skip_edge, auto&& visit) {
+    visit(f);
+    for (int k = 0; k < 3; ++k) {
+      const int e = graph_.halfedge_edge[3 * f + k];
+      if (e == skip_edge) continue;
+      for (int n = graph_.first_node(e), end = graph_.end_node(e); n < end; ++n) visit(n);
+    }
+  };
+  auto is_target = [&](int f) { return std::find(targets.begin(), targets.end(), f) != targets.end(); };
+  // Best arrival into a target face so far: from node, into face, total length.
+  int best_node = -1, best_face = -1;
+  float best = std::numeric_limits<float>::infinity();
+
+  for (int s : sources)
+    for_face_nodes(s, -1, [&](int node) {
+      touch(node);
+      relax(node, -1, static_cast<float>((cache[node].cast<double>() - pa).norm()));
+    });
+
+  int visited = 0;
+  while (!queue.empty()) {
+    // LLL: nodes whose key exceeds the queue's mean go to the back.
+    const double mean = key_sum / static_cast<double>(queue.size());
+    for (size_t moves = 0; moves < queue.size(); ++moves) {
+      const int f = queue.front();
+      if (key(f) <= mean) break;
+      queue.pop_front();
+      queue.push_back(f);
+    }
+    const int u = queue.pop_front();
+    state_[u] = 2;
+    key_sum -= key(u);
+    // A* bound: a node whose key reaches the best arrival cannot improve it (the deque is not a
+    // priority queue, so the search drains it instead of stopping at the first such node).
+    if (key(u) >= best) continue;
+    ++visited;
+    const float du = dist_[u];
+    const Eigen::Vector3f pu = cache[u];
+    auto expand_face = [&](int f, int skip_edge) {
+      if (is_target(f)) {
+        const float total = du + heuristic[u];
+        if (total < best) best = total, best_node = u, best_face = f;
+      }
+      for_face_nodes(f, skip_edge, [&](int node) {
+        if (node == u) return;
+        touch(node);
+        relax(node, u, du + (cache[node] - pu).norm());
+      });
+    };
+    if (u < nf) {
+      expand_face(u, -1);
+    } else {
+      int faces[2];
+      node_faces(mesh_, graph_, u, faces);
+      const int e = graph_.edge_of_node(u);
+      for (int f : faces)
+        if (f >= 0) expand_face(f, e);
+    }
+  }
+  if (stats) stats->visited_nodes += visited;
+
+  if (best_face >= 0) {
+    // Walk back: face nodes contribute their face, links the face they run through.
+    strip.push_back(best_face);
+    for (int node = best_node; node >= 0; node = parent_[node]) {
+      if (node < nf) {
+        strip.push_back(node);
+      } else {
+        int faces[2];
+        node_faces(mesh_, graph_, node, faces);
+        const int f = strip.back();
+        // An edge node between the face after it and the face before it in the strip.
+        const int before = parent_[node] >= 0 ? link_face(node, parent_[node]) : -1;
+        if (faces[0] != f && faces[1] != f) strip.push_back(faces[0] == before ? faces[1] : faces[0]);
+        if (before >= 0) strip.push_back(before);
+      }
+    }
+    // The first node was linked to the source point through a source face.
+    {
+      int first = best_node;
+      while (first >= 0 && parent_[first] >= 0) first = parent_[first];
+      int faces[2];
+      if (first >= nf) {
+        node_faces(mesh_, graph_, first, faces);
+        const int src = std::find(sources.begin(), sources.end(), faces[0]) != sources.end() ? faces[0] : faces[1];
+        if (strip.back() != src) strip.push_back(src);
+      }
+    }
+    std::reverse(strip.begin(), strip.end());
+    strip.erase(std::unique(strip.begin(), strip.end()), strip.end());
+  }
+  for (int node : touched_) {
+    dist_[node] = std::numeric_limits<float>::infinity();
+    parent_[node] = -1;
+    state_[node] = 0;
+  }
+  touched_.clear();
+  if (best_face < 0) return false;
+  // parent_ doubles as the loop-removal slot table (all -1 again after the reset above).
+  remove_loops(strip, parent_);
+  return true;
+}
+
+// =================================================================================================
+// Phases (ii) and (iii): funnel and straightening
+// =================================================================================================
+
+namespace {
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+// Positive when c is to the left of a -> b.
+double orient(const Vec2& a, const Vec2& b, const Vec2& c) { return cross2(b - a, c - a); }
+
+struct Apex {
+  Vec2 pos;
+  int vertex = -1;  // mesh vertex (-1 for the end points)
+  int portal = -1;  // index of the last portal it bounds (-1 for the start; #portals for the end)
+};
+
+// The funnel algorithm over the portals of an unfolded strip ("simple stupid funnel").
+void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std::vector<Apex>& apices) {
+  const int n = static_cast<int>(u.portals.size());
+  apices.clear();
+  apices.push_back({source, -1, -1});
+  Vec2 apex = source, left = source, right = source;
+  int apex_index = -1, left_index = -1, right_index = -1;
+  int left_vertex = -1, right_vertex = -1;
+  for (int i = 0; i <= n; ++i) {
+    const Vec2 L = i < n ? u.portals[i].left : target;
+    const Vec2 R = i < n ? u.portals[i].right : target;
+    const int lv = i < n ? u.portals[i].left_vertex : -1;
+    const int rv = i < n ? u.portals[i].right_vertex : -1;
+    // Right side: tighten when R is left of (or on) apex->right.
+    if (orient(apex, right, R) >= 0) {
+      if (apex == right || apex == left || orient(apex, left, R) < 0) {
+        right = R;
+        right_index = i;
+        right_vertex = rv;
+      } else {
+        // R crosses over the left side: the left point becomes the apex.
+        apices.push_back({left, left_vertex, left_index});
+        apex = left;
+        apex_index = left_index;
+        right = left = apex;
+        right_index = left_index = apex_index;
+        right_vertex = left_vertex;
+        i = apex_index;
+        continue;
+      }
+    }
+    // Left side: tighten when L is right of (or on) apex->left.
+    if (orient(apex, left, L) <= 0) {
+      if (apex == left || apex == right || orient(apex, right, L) > 0) {
+        left = L;
+        left_index = i;
+        left_vertex = lv;
+      } else {
+        apices.push_back({right, right_vertex, right_index});
+        apex = right;
+        apex_index = right_index;
+        left = right = apex;
+        left_index = right_index = apex_index;
+        left_vertex = right_vertex;
+        i = apex_index;
+        continue;
+      }
+    }
+  }
+  if (apices.back().pos == target && apices.size() > 1) apices.pop_back();
+  apices.push_back({target, -1, n});
+}
+
+// Turning angle of the path at apex j (0 at the ends).
+double turn_at(const std::vector<Apex>& apices, size_t j) {
+  if (j == 0 || j + 1 >= apices.size()) return 0;
+  const Vec2 a = apices[j].pos - apices[j - 1].pos, b = apices[j + 1].pos - apices[j].pos;
+  return std::atan2(std::abs(cross2(a, b)), a.dot(b));
+}
+
+// Lerps on every portal from the funnel's polyline.
+void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vector<double>& lerps) {
+  const int n = static_cast<int>(u.portals.size());
+  lerps.resize(n);
+  size_t j = 0;
+  for (int i = 0; i < n; ++i) {
+    while (j + 1 < apices.size() && apices[j + 1].portal < i) ++j;
+    const Vec2& q = apices[j].pos;
+    const Vec2 d = apices[j + 1].pos - q;
+    const Vec2& R = u.portals[i].right;
+    const Vec2& L = u.portals[i].left;
+    const double den = cross2(d, L - R);
+    double s = std::abs(den) > 0 ? cross2(d, q - R) / den : 0.5;
+    if (!(s >= 0)) s = 0;
+    if (s > 1) s = 1;
+    lerps[i] = s;
+  }
+}
+
+double polyline_length(const std::vector<Apex>& apices) {
+  double length = 0;
+  for (size_t j = 1; j < apices.size(); ++j) length += (apices[j].pos - apices[j - 1].pos).norm();
+  return length;
+}
+
+}  // namespace
+
+void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
+                                PathStats* stats) {
+  path.strip = strip;
+  point_in_face(mesh_, a, strip.front(), path.start);
+  point_in_face(mesh_, b, strip.back(), path.end);
+  path.lerps.clear();
+  if (strip.size() == 1) return;
+
+  static thread_local UnfoldedStrip unfolded;
+  static thread_local std::vector<Apex> apices, trial_apices;
+  static thread_local std::vector<int> frozen, trial, semi_star;
+  frozen.clear();
+
+  auto solve = [&](const std::vector<int>& s, std::vector<Apex>& out) {
+    unfold_strip(mesh_, s, unfolded);
+    MeshPoint pa, pb;
+    point_in_face(mesh_, a, s.front(), pa);
+    point_in_face(mesh_, b, s.back(), pb);
+    funnel(unfolded, unfolded.map(0, pa), unfolded.map(static_cast<int>(s.size()) - 1, pb), out);
+    return polyline_length(out);
+  };
+  double length = solve(strip, apices);
+
+  for (int flips = 0; options_.straighten && flips < options_.max_flips; ++flips) {
+    // The unfrozen reflex vertex with the largest turn.
+    int best = -1;
+    double best_turn = 1e-9;
+    for (size_t j = 1; j + 1 < apices.size(); ++j) {
+      if (apices[j].vertex < 0 || std::find(frozen.begin(), frozen.end(), apices[j].vertex) != frozen.end()) continue;
+      const double turn = turn_at(apices, j);
+      if (turn > best_turn) best_turn = turn, best = static_cast<int>(j);
+    }
+    if (best < 0) break;
+    const int v = apices[best].vertex;
+    // The run of strip faces around v (its semi-star inside the strip).
+    int first = std::clamp(apices[best].portal, 0, static_cast<int>(strip.size()) - 1);
+    if (!contains_vertex(mesh_, strip[first], v)) {
+      frozen.push_back(v);
+      continue;
+    }
+    int last = first;
+    while (first > 0 && contains_vertex(mesh_, strip[first - 1], v)) --first;
+    while (last + 1 < static_cast<int>(strip.size()) && contains_vertex(mesh_, strip[last + 1], v)) ++last;
+    // Walk around v the other way, from strip[first] to strip[last].
+    const int f0 = strip[first];
+    const int k0 = corner_of(mesh_, f0, v);
+    const int forward = mesh_.adjacency[f0][(k0 + 2) % 3];
+    const bool run_forward = first < last && forward == strip[first + 1];
+    semi_star.clear();
+    bool closed = false;
+    int f = f0;
+    for (int steps = 0; steps < 4096; ++steps) {
+      const int k = corner_of(mesh_, f, v);
+      f = run_forward ? mesh_.adjacency[f][k] : mesh_.adjacency[f][(k + 2) % 3];
+      if (f < 0) break;
+      if (f == strip[last]) {
+        closed = true;
+        break;
+      }
+      semi_star.push_back(f);
+    }
+    if (!closed) {  // the other side is open (a boundary): v stays
+      frozen.push_back(v);
+      continue;
+    }
+    trial.assign(strip.begin(), strip.begin() + first + 1);
+    trial.insert(trial.end(), semi_star.begin(), semi_star.end());
+    trial.insert(trial.end(), strip.begin() + last, strip.end());
+    remove_loops(trial, parent_);
+    const double trial_length = solve(trial, trial_apices);
+    if (trial_length < length - 1e-12 * mesh_.scale) {
+      strip.swap(trial);
+      apices.swap(trial_apices);
+      length = trial_length;
+      if (stats) ++stats->flips;
+    } else {
+      frozen.push_back(v);
+      if (stats) ++stats->frozen;
+    }
+  }
+  // Crossings of the final strip.
+  unfold_strip(mesh_, strip, unfolded);
+  crossings(unfolded, apices, path.lerps);
+  path.strip = strip;
+  point_in_face(mesh_, a, strip.front(), path.start);
+  point_in_face(mesh_, b, strip.back(), path.end);
+}
+
+bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats) {
+  static thread_local std::vector<int> strip;
+  if (!initial_strip(a, b, strip, stats)) {
+    path = GeodesicPath{a, b, {}, {}};
+    return false;
+  }
+  straighten(a, b, strip, path, stats);
+  return true;
+}
+
+// =================================================================================================
+// Paths
+// =================================================================================================
+
+namespace {
+
+// Crossing i of a path as weights on face strip[i + side] (side 0: its own face, 1: the next one).
+MeshPoint crossing_point(const TriMesh& mesh, const GeodesicPath& path, size_t i, int side) {
+  const int f = path.strip[i];
+  const int g = path.strip[i + 1];
+  const int k = edge_to(mesh, f, g);
+  const double l = path.lerps[i];
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  if (side == 0) {
+    w[k] = 1 - l;
+    w[(k + 1) % 3] = l;
+    return from_weights(f, w);
+  }
+  w[corner_of(mesh, g, mesh.triangles[f][k])] = 1 - l;
+  w[corner_of(mesh, g, mesh.triangles[f][(k + 1) % 3])] = l;
+  return from_weights(g, w);
+}
+
+// Point j of the path (0: start, 1..n-1: crossings, n: end) expressed on strip[j] (or the last face).
+MeshPoint point_on_own_face(const TriMesh& mesh, const GeodesicPath& path, size_t j) {
+  if (j == 0) return path.start;
+  if (j > path.lerps.size()) return path.end;
+  return crossing_point(mesh, path, j - 1, 1);
+}
+// Point j+1 expressed on strip[j].
+MeshPoint next_point_on_face(const TriMesh& mesh, const GeodesicPath& path, size_t j) {
+  if (j >= path.lerps.size()) return path.end;
+  return crossing_point(mesh, path, j, 0);
+}
+
+}  // namespace
+
+void path_points(const TriMesh& mesh, const GeodesicPath& path, std::vector<MeshPoint>& points) {
+  points.clear();
+  points.push_back(path.start);
+  for (size_t i = 0; i < path.lerps.size(); ++i) points.push_back(crossing_point(mesh, path, i, 0));
+  points.push_back(path.end);
+}
+
+void path_positions(const TriMesh& mesh, const GeodesicPath& path, std::vector<Vec3>& positions) {
+  positions.clear();
+  positions.push_back(eval_position(mesh, path.start));
+  for (size_t i = 0; i < path.lerps.size(); ++i) positions.push_back(eval_position(mesh, crossing_point(mesh, path, i, 0)));
+  positions.push_back(eval_position(mesh, path.end));
+}
+
+double path_length(const TriMesh& mesh, const GeodesicPath& path) {
+  Vec3 prev = eval_position(mesh, path.start);
+  double length = 0;
+  for (size_t i = 0; i < path.lerps.size(); ++i) {
+    const Vec3 p = eval_position(mesh, crossing_point(mesh, path, i, 0));
+    length += (p - prev).norm();
+    prev = p;
+  }
+  return length + (eval_position(mesh, path.end) - prev).norm();
+}
+
+namespace {
+
+// Locates arc-length fraction t: segment j (between points j and j+1, on face strip[j]) and the
+// fraction within it.
+void locate_fraction(const TriMesh& mesh, const GeodesicPath& path, double t, size_t& segment, double& alpha) {
+  static thread_local std::vector<Vec3> positions;
+  path_positions(mesh, path, positions);
+  const size_t segments = positions.size() - 1;
+  double total = 0;
+  for (size_t j = 0; j < segments; ++j) total += (positions[j + 1] - positions[j]).norm();
+  const double target = std::clamp(t, 0.0, 1.0) * total;
+  double run = 0;
+  for (size_t j = 0; j < segments; ++j) {
+    const double len = (positions[j + 1] - positions[j]).norm();
+    if (run + len >= target && len > 0) {
+      segment = j;
+      alpha = std::clamp((target - run) / len, 0.0, 1.0);
+      return;
+    }
+    run += len;
+  }
+  segment = segments - 1;
+  alpha = 1;
+}
+
+MeshPoint lerp_on_segment(const TriMesh& mesh, const GeodesicPath& path, size_t j, double alpha) {
+  const MeshPoint p = point_on_own_face(mesh, path, j);
+  const MeshPoint q = next_point_on_face(mesh, path, j);
+  return {p.face, (1 - alpha) * p.uv + alpha * q.uv};
+}
+
+}  // namespace
+
+MeshPoint eval_path(const TriMesh& mesh, const GeodesicPath& path, double t) {
+  if (path.strip.empty()) return path.start;
+  size_t j;
+  double alpha;
+  locate_fraction(mesh, path, t, j, alpha);
+  return lerp_on_segment(mesh, path, j, alpha);
+}
+
+GeodesicPath sub_path(const TriMesh& mesh, const GeodesicPath& path, double t0, double t1) {
+  if (path.strip.empty()) return path;
+  size_t j0, j1;
+  double a0, a1;
+  locate_fraction(mesh, path, t0, j0, a0);
+  locate_fraction(mesh, path, t1, j1, a1);
+  GeodesicPath out;
+  out.start = lerp_on_segment(mesh, path, j0, a0);
+  out.end = lerp_on_segment(mesh, path, j1, a1);
+  out.strip.assign(path.strip.begin() + j0, path.strip.begin() + j1 + 1);
+  out.lerps.assign(path.lerps.begin() + j0, path.lerps.begin() + j1);
+  return out;
+}
+
+GeodesicPath reversed(const TriMesh&, const GeodesicPath& path) {
+  GeodesicPath out;
+  out.start = path.end;
+  out.end = path.start;
+  out.strip.assign(path.strip.rbegin(), path.strip.rend());
+  out.lerps.resize(path.lerps.size());
+  for (size_t i = 0; i < path.lerps.size(); ++i) out.lerps[i] = 1 - path.lerps[path.lerps.size() - 1 - i];
+  return out;
+}
+
+Tangent start_tangent(const TriMesh& mesh, const GeodesicPath& path) {
+  if (path.strip.empty()) return {path.start.face, Vec3::Zero()};
+  const Vec3 p0 = eval_position(mesh, path.start);
+  const double eps = 1e-12 * mesh.scale;
+  for (size_t j = 0; j + 1 < path.strip.size() + 1; ++j) {
+    const Vec3 q = eval_position(mesh, next_point_on_face(mesh, path, j));
+    const Vec3 d = q - p0;
+    if (d.norm() > eps) return {path.strip[j], d.normalized()};
+  }
+  return {path.start.face, Vec3::Zero()};
+}
+
+Tangent end_tangent(const TriMesh& mesh, const GeodesicPath& path) {
+  if (path.strip.empty()) return {path.end.face, Vec3::Zero()};
+  const Vec3 p1 = eval_position(mesh, path.end);
+  const double eps = 1e-12 * mesh.scale;
+  for (size_t j = path.strip.size(); j-- > 0;) {
+    const Vec3 q = eval_position(mesh, point_on_own_face(mesh, path, j));
+    const Vec3 d = p1 - q;
+    if (d.norm() > eps) return {path.strip[j], d.normalized()};
+  }
+  return {path.end.face, Vec3::Zero()};
+}
+
+}  // namespace splinekit::surface

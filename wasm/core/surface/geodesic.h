@@ -1,0 +1,118 @@
+// Locally shortest geodesic paths between mesh points (b/Surf §5.1 "Point-to-point shortest path",
+// §6.2 for the refined graph). Three phases:
+//   (i)   an initial strip of faces from a search on the dual graph with the small-label-first and
+//         large-label-last deque heuristics (Bertsekas) and an A* Euclidean term; faces with edges
+//         longer than 5% of the bounding-box diagonal get extra graph nodes on those edges;
+//   (ii)  the strip is unfolded into the plane and the funnel algorithm (Lee & Preparata) finds the
+//         shortest path inside it;
+//   (iii) the strip is straightened (after Xin & Wang): the reflex vertex with the largest turn has its
+//         semi-star in the strip replaced by its other semi-star; if the path does not get shorter the
+//         vertex is frozen; repeat until no reflex vertex is left unfrozen.
+// A path is its strip of faces and the intercepts (lerps) on the edges between consecutive faces.
+#pragma once
+
+#include "surface/mesh.h"
+
+#include <vector>
+
+namespace splinekit::surface {
+
+struct GeodesicPath {
+  MeshPoint start, end;        // start on strip.front(), end on strip.back()
+  std::vector<int> strip;      // faces crossed, consecutive ones adjacent
+  std::vector<double> lerps;   // #strip-1: crossing of edge (t[k], t[k+1]) of strip[i] toward strip[i+1]
+};
+
+// The search graph of phase (i): the dual graph refined as in §6.2. Every face has a node at its
+// centroid and every edge carries `steiner` nodes evenly spaced along it (more on edges longer than
+// 5% of the bounding-box diagonal, one per such length), so a triangle is represented by several
+// nodes and paths are not forced through centroids. Two nodes are linked when they lie on the same
+// face (not on the same edge); the link remembers that face, which gives the strip. The links are
+// implicit (found from the face adjacency); only the edge numbering is stored.
+struct DualGraph {
+  int faces = 0;
+  int edges = 0;
+  int steiner = 3;                      // nodes per ordinary edge
+  double long_edge = 0;                 // edges longer than this get one node per such length
+  std::vector<int> halfedge_edge;       // #3F: undirected edge of half-edge (f, k)
+  std::vector<int> edge_halfedge;       // #E: one half-edge (3f + k) of each edge
+  std::vector<int> edge_offsets;        // #E+1: first node of each edge after the F face nodes
+                                        // (empty when every edge has `steiner` nodes)
+  int nodes() const { return faces + (edge_offsets.empty() ? edges * steiner : edge_offsets.back()); }
+  int first_node(int e) const { return faces + (edge_offsets.empty() ? e * steiner : edge_offsets[e]); }
+  int end_node(int e) const { return faces + (edge_offsets.empty() ? (e + 1) * steiner : edge_offsets[e + 1]); }
+  int edge_of_node(int node) const;     // node >= faces
+};
+
+struct ShortestPathOptions {
+  bool straighten = true;          // phase (iii)
+  int max_flips = 100000;          // safety bound on phase (iii)
+  // Graph resolution (phase (i)): `steiner` nodes on every edge, and edges longer than
+  // long_edge_fraction of the bounding-box diagonal get one node per such length. The paper uses
+  // 5% and face nodes only; measured on the shared meshes (BENCHMARKS.md), 3 nodes per edge and 1%
+  // take the share of paths within 0.5% of the exact geodesic distance from 73-94% to 97-100%.
+  double long_edge_fraction = 0.01;
+  int steiner = 3;
+};
+
+// Counters for tests and benchmarks.
+struct PathStats {
+  int visited_nodes = 0;
+  int flips = 0;
+  int frozen = 0;
+};
+
+class GeodesicSolver {
+ public:
+  explicit GeodesicSolver(const TriMesh& mesh, const ShortestPathOptions& options = {});
+
+  const TriMesh& mesh() const { return mesh_; }
+  const DualGraph& graph() const { return graph_; }
+  size_t bytes() const;
+
+  // The locally shortest path from a to b (mesh space). Always succeeds on a connected mesh; when b
+  // cannot be reached (another component) the path is empty (strip empty) and false is returned.
+  bool shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats = nullptr);
+
+  // Phase (i) alone (for tests and benchmarks): the face strip from a to b.
+  bool initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats = nullptr);
+  // Phases (ii)+(iii) on a given strip (consecutive faces adjacent; a on strip.front(), b on strip.back()).
+  void straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
+                  PathStats* stats = nullptr);
+
+ private:
+  Vec3 node_position(int node) const;
+  int link_face(int a, int b) const;  // a face holding both nodes
+
+  const TriMesh& mesh_;
+  ShortestPathOptions options_;
+  DualGraph graph_;
+  // Search scratch, reused between queries (only touched entries are reset).
+  std::vector<float> dist_;
+  std::vector<int> parent_;       // node
+  std::vector<uint8_t> state_;    // 0 untouched, 1 in queue, 2 touched
+  std::vector<int> touched_;
+};
+
+// ---- Paths --------------------------------------------------------------------------------------
+
+// Start, every edge crossing, end (mesh points; crossings on strip[i]'s shared edge, expressed on strip[i]).
+void path_points(const TriMesh& mesh, const GeodesicPath& path, std::vector<MeshPoint>& points);
+void path_positions(const TriMesh& mesh, const GeodesicPath& path, std::vector<Vec3>& positions);
+double path_length(const TriMesh& mesh, const GeodesicPath& path);
+// The point at arc-length fraction t in [0, 1].
+MeshPoint eval_path(const TriMesh& mesh, const GeodesicPath& path, double t);
+// The part of the path between fractions t0 <= t1 (a path again: strip and lerps).
+GeodesicPath sub_path(const TriMesh& mesh, const GeodesicPath& path, double t0, double t1);
+GeodesicPath reversed(const TriMesh& mesh, const GeodesicPath& path);
+
+// A tangent vector at a point: a 3D vector in the plane of `face`, which contains the point.
+struct Tangent {
+  int face = -1;
+  Vec3 dir = Vec3::Zero();
+};
+// Unit direction in which the path leaves its start / arrives at its end (zero dir for a point path).
+Tangent start_tangent(const TriMesh& mesh, const GeodesicPath& path);
+Tangent end_tangent(const TriMesh& mesh, const GeodesicPath& path);
+
+}  // namespace splinekit::surface

@@ -1,0 +1,360 @@
+#include "surface/mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace splinekit::surface {
+
+namespace {
+
+// An undirected edge key with the half-edge that carries it.
+struct HalfEdge {
+  uint64_t key;
+  int face;
+  int8_t k;
+};
+
+uint64_t edge_key(int a, int b) {
+  const auto lo = static_cast<uint64_t>(std::min(a, b)), hi = static_cast<uint64_t>(std::max(a, b));
+  return (lo << 32) | hi;
+}
+
+// Reverses the winding of face f: (a, b, c) -> (a, c, b). Edges (ab, bc, ca) become (ac, cb, ba),
+// i.e. old edges (2, 1, 0).
+void flip_face(std::array<int, 3>& t, std::array<int, 3>& adj) {
+  std::swap(t[1], t[2]);
+  std::swap(adj[0], adj[2]);
+}
+
+bool is_degenerate(const std::array<int, 3>& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
+
+}  // namespace
+
+MeshStatus build_mesh(const double* positions, int num_vertices, const int* triangles, int num_faces, TriMesh& out,
+                      std::string& error) {
+  if (num_vertices <= 0) return error = "the mesh has no vertices", MeshStatus::kInvalidInput;
+  if (num_faces <= 0) return error = "the mesh has no faces", MeshStatus::kInvalidInput;
+  for (int i = 0; i < 3 * num_vertices; ++i) {
+    if (!std::isfinite(positions[i])) {
+      error = "vertex " + std::to_string(i / 3) + " has a non-finite coordinate";
+      return MeshStatus::kInvalidInput;
+    }
+  }
+  for (int i = 0; i < 3 * num_faces; ++i) {
+    if (triangles[i] < 0 || triangles[i] >= num_vertices) {
+      error = "face " + std::to_string(i / 3) + " refers to vertex " + std::to_string(triangles[i]) + ", but the mesh has " +
+              std::to_string(num_vertices) + " vertices";
+      return MeshStatus::kInvalidInput;
+    }
+  }
+
+  TriMesh mesh;
+  MeshReport& report = mesh.report;
+  report.file_vertices = num_vertices;
+  report.file_faces = num_faces;
+
+  // ---- Weld duplicate positions (first occurrence in file order wins) -----------------------------
+  std::vector<uint8_t> used(num_vertices, 0);
+  for (int i = 0; i < 3 * num_faces; ++i) used[triangles[i]] = 1;
+  std::vector<int> order(num_vertices);
+  std::iota(order.begin(), order.end(), 0);
+  auto less_pos = [&](int a, int b) {
+    const double* pa = positions + 3 * a;
+    const double* pb = positions + 3 * b;
+    if (pa[0] != pb[0]) return pa[0] < pb[0];
+    if (pa[1] != pb[1]) return pa[1] < pb[1];
+    if (pa[2] != pb[2]) return pa[2] < pb[2];
+    return a < b;
+  };
+  std::sort(order.begin(), order.end(), less_pos);
+  std::vector<int> representative(num_vertices);
+  for (size_t i = 0; i < order.size();) {
+    size_t j = i;
+    int first_used = -1;
+    const double* pi = positions + 3 * order[i];
+    while (j < order.size() && positions[3 * order[j]] == pi[0] && positions[3 * order[j] + 1] == pi[1] &&
+           positions[3 * order[j] + 2] == pi[2]) {
+      if (used[order[j]] && first_used < 0) first_used = order[j];
+      ++j;
+    }
+    for (size_t m = i; m < j; ++m) {
+      const int v = order[m];
+      representative[v] = used[v] ? first_used : v;
+      if (used[v] && v != first_used) ++report.welded_vertices;
+    }
+    i = j;
+  }
+  for (int v = 0; v < num_vertices; ++v) report.unreferenced_vertices += used[v] ? 0 : 1;
+
+  mesh.mesh_vertex.assign(num_vertices, -1);
+  for (int v = 0; v < num_vertices; ++v) {
+    if (used[v] && representative[v] == v) {
+      mesh.mesh_vertex[v] = static_cast<int>(mesh.file_vertex.size());
+      mesh.file_vertex.push_back(v);
+    }
+  }
+  for (int v = 0; v < num_vertices; ++v) {
+    if (used[v] && representative[v] != v) mesh.mesh_vertex[v] = mesh.mesh_vertex[representative[v]];
+  }
+  mesh.positions.resize(mesh.file_vertex.size());
+  for (size_t i = 0; i < mesh.file_vertex.size(); ++i) {
+    const double* p = positions + 3 * mesh.file_vertex[i];
+    mesh.positions[i] = Vec3(p[0], p[1], p[2]);
+  }
+  mesh.triangles.resize(num_faces);
+  for (int f = 0; f < num_faces; ++f) {
+    for (int k = 0; k < 3; ++k) mesh.triangles[f][k] = mesh.mesh_vertex[triangles[3 * f + k]];
+  }
+  mesh.flipped.assign(num_faces, 0);
+
+  // ---- Adjacency by matching undirected edges -----------------------------------------------------
+  mesh.adjacency.assign(num_faces, {-1, -1, -1});
+  {
+    std::vector<HalfEdge> half_edges;
+    half_edges.reserve(3 * static_cast<size_t>(num_faces));
+    for (int f = 0; f < num_faces; ++f) {
+      const auto& t = mesh.triangles[f];
+      if (is_degenerate(t)) {
+        ++report.degenerate_faces;
+        continue;
+      }
+      for (int k = 0; k < 3; ++k) half_edges.push_back({edge_key(t[k], t[(k + 1) % 3]), f, static_cast<int8_t>(k)});
+    }
+    std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& a, const HalfEdge& b) {
+      return a.key != b.key ? a.key < b.key : a.face < b.face;
+    });
+    for (size_t i = 0; i < half_edges.size();) {
+      size_t j = i;
+      while (j < half_edges.size() && half_edges[j].key == half_edges[i].key) ++j;
+      if (j - i == 2) {
+        const HalfEdge& a = half_edges[i];
+        const HalfEdge& b = half_edges[i + 1];
+        mesh.adjacency[a.face][a.k] = b.face;
+        mesh.adjacency[b.face][b.k] = a.face;
+      } else if (j - i > 2) {
+        ++report.non_manifold_edges;  // every face keeps it as a boundary edge
+      }
+      i = j;
+    }
+  }
+
+  // ---- Consistent winding per component (breadth-first; flip neighbours that disagree) ------------
+  {
+    std::vector<uint8_t> seen(num_faces, 0);
+    std::vector<int> queue;
+    for (int seed = 0; seed < num_faces; ++seed) {
+      if (seen[seed]) continue;
+      seen[seed] = 1;
+      ++report.components;
+      queue.assign(1, seed);
+      for (size_t q = 0; q < queue.size(); ++q) {
+        const int f = queue[q];
+        for (int k = 0; k < 3; ++k) {
+          const int g = mesh.adjacency[f][k];
+          if (g < 0) continue;
+          const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+          const int kg = edge_to(mesh, g, f);
+          // Agreeing windings traverse the shared edge in opposite directions.
+          const bool agrees = mesh.triangles[g][kg] == b && mesh.triangles[g][(kg + 1) % 3] == a;
+          if (!seen[g]) {
+            if (!agrees) {
+              flip_face(mesh.triangles[g], mesh.adjacency[g]);
+              mesh.flipped[g] ^= 1;
+              ++report.flipped_faces;
+            }
+            seen[g] = 1;
+            queue.push_back(g);
+          } else if (!agrees) {
+            // A Möbius-like strip: no consistent winding exists; cut this adjacency.
+            mesh.adjacency[f][k] = -1;
+            mesh.adjacency[g][kg] = -1;
+            ++report.non_orientable_cuts;
+          }
+        }
+      }
+    }
+  }
+
+  // ---- Split vertices whose faces form several fans -----------------------------------------------
+  const int nv = static_cast<int>(mesh.positions.size());
+  {
+    std::vector<int> offsets(nv + 1, 0);
+    for (const auto& t : mesh.triangles)
+      if (!is_degenerate(t))
+        for (int v : t) ++offsets[v + 1];
+    for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
+    std::vector<int> incident(offsets[nv]);
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for (int f = 0; f < num_faces; ++f)
+      if (!is_degenerate(mesh.triangles[f]))
+        for (int v : mesh.triangles[f]) incident[fill[v]++] = f;
+
+    mesh.vertex_face.assign(nv, -1);
+    std::vector<int> fan;
+    std::vector<uint8_t> visited;
+    for (int v = 0; v < nv; ++v) {
+      const int begin = offsets[v], end = offsets[v + 1];
+      visited.assign(end - begin, 0);
+      int fans = 0;
+      for (int s = begin; s < end; ++s) {
+        if (visited[s - begin]) continue;
+        // Walk backwards to the start of this fan (a boundary), then forwards collecting it.
+        int start = incident[s];
+        for (int steps = 0; steps < end - begin; ++steps) {
+          const int k = corner_of(mesh, start, v);
+          const int prev = mesh.adjacency[start][k];  // across edge (v, next)
+          if (prev < 0 || prev == incident[s]) break;
+          start = prev;
+        }
+        fan.clear();
+        int f = start;
+        for (int steps = 0; steps <= end - begin && f >= 0; ++steps) {
+          fan.push_back(f);
+          const int k = corner_of(mesh, f, v);
+          f = mesh.adjacency[f][(k + 2) % 3];  // across edge (prev, v)
+          if (f == start) break;
+        }
+        int target = v;
+        if (fans > 0) {  // a further fan gets its own copy of the vertex
+          target = static_cast<int>(mesh.positions.size());
+          mesh.positions.push_back(mesh.positions[v]);
+          mesh.file_vertex.push_back(mesh.file_vertex[v]);
+          mesh.vertex_face.push_back(start);
+          if (fans == 1) ++report.non_manifold_vertices;
+        } else {
+          mesh.vertex_face[v] = start;
+        }
+        for (int g : fan) {
+          for (int m = begin; m < end; ++m)
+            if (incident[m] == g) visited[m - begin] = 1;
+          if (target != v) mesh.triangles[g][corner_of(mesh, g, v)] = target;
+        }
+        ++fans;
+      }
+    }
+  }
+  // Vertices only used by degenerate faces still need a face.
+  for (int f = 0; f < num_faces; ++f)
+    for (int v : mesh.triangles[f])
+      if (mesh.vertex_face[v] < 0) mesh.vertex_face[v] = f;
+
+  // ---- Boundary statistics and scale --------------------------------------------------------------
+  {
+    std::vector<std::pair<int, int>> boundary;  // (from, to) along the winding
+    for (int f = 0; f < num_faces; ++f) {
+      if (is_degenerate(mesh.triangles[f])) continue;
+      for (int k = 0; k < 3; ++k)
+        if (mesh.adjacency[f][k] < 0) boundary.emplace_back(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]);
+    }
+    report.boundary_edges = static_cast<int>(boundary.size());
+    // Loops: connected components of the boundary edges (union-find over vertices).
+    std::vector<int> parent(mesh.positions.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    std::vector<uint8_t> on_boundary(mesh.positions.size(), 0);
+    for (auto [a, b] : boundary) {
+      on_boundary[a] = on_boundary[b] = 1;
+      parent[find(a)] = find(b);
+    }
+    for (size_t v = 0; v < parent.size(); ++v) report.boundary_loops += on_boundary[v] && find(static_cast<int>(v)) == static_cast<int>(v);
+  }
+  Vec3 lo = mesh.positions[0], hi = mesh.positions[0];
+  for (const Vec3& p : mesh.positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  mesh.scale = std::max((hi - lo).norm(), 1e-300);
+  report.used_vertices = static_cast<int>(mesh.positions.size());
+  out = std::move(mesh);
+  return MeshStatus::kOk;
+}
+
+size_t mesh_bytes(const TriMesh& m) {
+  return m.positions.capacity() * sizeof(Vec3) + m.triangles.capacity() * sizeof(m.triangles[0]) +
+         m.adjacency.capacity() * sizeof(m.adjacency[0]) + (m.vertex_face.capacity() + m.file_vertex.capacity() +
+                                                            m.mesh_vertex.capacity()) * sizeof(int) +
+         m.flipped.capacity();
+}
+
+Vec3 eval_position(const TriMesh& mesh, const MeshPoint& p) {
+  const auto& t = mesh.triangles[p.face];
+  return (1 - p.uv.x() - p.uv.y()) * mesh.positions[t[0]] + p.uv.x() * mesh.positions[t[1]] + p.uv.y() * mesh.positions[t[2]];
+}
+
+Vec3 face_normal(const TriMesh& mesh, int face) {
+  const auto& t = mesh.triangles[face];
+  const Vec3 n = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+  const double len = n.norm();
+  return len > 0 ? Vec3(n / len) : Vec3::Zero();
+}
+
+MeshPoint to_mesh_point(const TriMesh& mesh, const MeshPoint& p) {
+  if (mesh.flipped[p.face]) return {p.face, Vec2(p.uv.y(), p.uv.x())};
+  return p;
+}
+
+MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& p) { return to_mesh_point(mesh, p); }
+
+MeshPoint vertex_point(const TriMesh& mesh, int vertex) {
+  const int f = mesh.vertex_face[vertex];
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  w[corner_of(mesh, f, vertex)] = 1;
+  return from_weights(f, w);
+}
+
+PointLocation locate(const TriMesh& mesh, const MeshPoint& p, double eps) {
+  const Eigen::Vector3d w = weights(p);
+  for (int k = 0; k < 3; ++k)
+    if (w[k] > 1 - eps) return {PointLocation::kVertex, mesh.triangles[p.face][k]};
+  for (int k = 0; k < 3; ++k)
+    if (w[k] < eps) return {PointLocation::kEdge, (k + 1) % 3};  // the edge opposite corner k
+  return {};
+}
+
+bool point_in_face(const TriMesh& mesh, const MeshPoint& p, int face, MeshPoint& out, double eps) {
+  if (face == p.face) return out = p, true;
+  const PointLocation where = locate(mesh, p, eps);
+  if (where.kind == PointLocation::kVertex) {
+    const int k = corner_of(mesh, face, where.index);
+    if (k < 0) return false;
+    Eigen::Vector3d w = Eigen::Vector3d::Zero();
+    w[k] = 1;
+    out = from_weights(face, w);
+    return true;
+  }
+  if (where.kind == PointLocation::kEdge && mesh.adjacency[p.face][where.index] == face) {
+    const Eigen::Vector3d w = weights(p);
+    const auto& t = mesh.triangles[p.face];
+    const int a = t[where.index], b = t[(where.index + 1) % 3];
+    const double s = w[(where.index + 1) % 3] / std::max(w[where.index] + w[(where.index + 1) % 3], 1e-300);
+    Eigen::Vector3d wf = Eigen::Vector3d::Zero();
+    wf[corner_of(mesh, face, a)] = 1 - s;
+    wf[corner_of(mesh, face, b)] = s;
+    out = from_weights(face, wf);
+    return true;
+  }
+  return false;
+}
+
+void vertex_fan(const TriMesh& mesh, int v, std::vector<int>& faces, bool& closed) {
+  faces.clear();
+  closed = false;
+  const int start = mesh.vertex_face[v];
+  int f = start;
+  for (size_t guard = 0; guard < mesh.triangles.size() && f >= 0; ++guard) {
+    faces.push_back(f);
+    const int k = corner_of(mesh, f, v);
+    if (k < 0) break;
+    f = mesh.adjacency[f][(k + 2) % 3];
+    if (f == start) {
+      closed = true;
+      break;
+    }
+  }
+}
+
+}  // namespace splinekit::surface

@@ -1,0 +1,112 @@
+// Triangle meshes for b/Surf (Mancinelli, Nazzaro, Pellacini, Puppo, "b/Surf: interactive Bézier
+// splines on surface meshes", §5.1 "Data representation"): an indexed mesh, its face adjacency (which
+// is also the dual graph), and the repairs a user expects when opening real files.
+//
+// Everything here is plain data over flat arrays. Two index spaces exist:
+//   - file space: vertex and face indices as in the file the user opened (what the API speaks);
+//   - mesh space: after welding duplicate positions, dropping unreferenced vertices, orienting faces
+//     consistently and splitting non-manifold vertices (what the algorithms use).
+// Faces keep their file index; only their winding may be flipped (`flipped[f]`), which swaps the
+// barycentric coordinates of points on them (to_mesh_point / to_file_point).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace splinekit::surface {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+
+// A point on the mesh: a face and barycentric coordinates (u, v) with respect to its vertices
+// (p = (1-u-v)·p0 + u·p1 + v·p2).
+struct MeshPoint {
+  int face = -1;
+  Vec2 uv = Vec2::Zero();
+};
+
+// What happened while building the mesh; all counts in file space unless noted.
+struct MeshReport {
+  int file_vertices = 0;
+  int file_faces = 0;
+  int used_vertices = 0;          // mesh-space vertices (after welding and splitting)
+  int welded_vertices = 0;        // file vertices merged into an earlier one at the same position
+  int unreferenced_vertices = 0;  // file vertices no face uses
+  int degenerate_faces = 0;       // faces with a repeated vertex (after welding): kept, isolated
+  int non_manifold_edges = 0;     // edges with more than two faces: left as boundaries
+  int non_manifold_vertices = 0;  // vertices whose faces form several fans: given one copy per fan
+  int flipped_faces = 0;          // faces whose winding was reversed to agree with their neighbours
+  int non_orientable_cuts = 0;    // adjacencies cut because no consistent winding exists
+  int boundary_edges = 0;
+  int boundary_loops = 0;
+  int components = 0;
+};
+
+struct TriMesh {
+  std::vector<Vec3> positions;                 // #V mesh-space vertices
+  std::vector<std::array<int, 3>> triangles;   // #F faces (file order), consistently wound
+  std::vector<std::array<int, 3>> adjacency;   // face across edge (t[k], t[k+1]); -1 on a boundary
+  std::vector<int> vertex_face;                // #V one face of each vertex; a fan's first face on a boundary
+  std::vector<int> file_vertex;                // #V mesh vertex -> file vertex
+  std::vector<int> mesh_vertex;                // #file vertices: file vertex -> mesh vertex (-1 unused)
+  std::vector<uint8_t> flipped;                // #F 1 when the face's winding was reversed
+  double scale = 1;                            // bounding-box diagonal
+  MeshReport report;
+};
+
+enum class MeshStatus { kOk, kInvalidInput };
+
+// Builds a mesh from file arrays. positions: #file_vertices x 3; triangles: #faces x 3 file indices.
+// On kInvalidInput, `error` names the problem and `mesh` is left untouched.
+MeshStatus build_mesh(const double* positions, int num_vertices, const int* triangles, int num_faces,
+                      TriMesh& mesh, std::string& error);
+
+// Bytes held by the mesh's arrays.
+size_t mesh_bytes(const TriMesh& mesh);
+
+// ---- Points -------------------------------------------------------------------------------------
+
+Vec3 eval_position(const TriMesh& mesh, const MeshPoint& p);
+Vec3 face_normal(const TriMesh& mesh, int face);  // unit (zero for a degenerate face)
+// Barycentric weights (w0, w1, w2) of a point.
+inline Eigen::Vector3d weights(const MeshPoint& p) { return {1 - p.uv.x() - p.uv.y(), p.uv.x(), p.uv.y()}; }
+inline MeshPoint from_weights(int face, const Eigen::Vector3d& w) { return {face, Vec2(w[1], w[2])}; }
+
+// File space <-> mesh space (the winding of flipped faces swaps u and v).
+MeshPoint to_mesh_point(const TriMesh& mesh, const MeshPoint& file_point);
+MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& mesh_point);
+// A mesh vertex as a point on its vertex_face.
+MeshPoint vertex_point(const TriMesh& mesh, int vertex);
+
+// Index (0..2) of vertex v in face f, or -1.
+inline int corner_of(const TriMesh& mesh, int face, int vertex) {
+  const auto& t = mesh.triangles[face];
+  return t[0] == vertex ? 0 : t[1] == vertex ? 1 : t[2] == vertex ? 2 : -1;
+}
+// Index (0..2) of the edge of `face` shared with `neighbor`, or -1.
+inline int edge_to(const TriMesh& mesh, int face, int neighbor) {
+  const auto& a = mesh.adjacency[face];
+  return a[0] == neighbor ? 0 : a[1] == neighbor ? 1 : a[2] == neighbor ? 2 : -1;
+}
+
+// Where a point sits: inside its face, on an edge (edge index), or on a vertex (mesh vertex).
+struct PointLocation {
+  enum Kind { kFace, kEdge, kVertex } kind = kFace;
+  int index = -1;  // edge index in the face (kEdge) or mesh vertex (kVertex)
+};
+PointLocation locate(const TriMesh& mesh, const MeshPoint& p, double eps = 1e-9);
+
+// The same point expressed on `face` (which must contain it: same face, across its edge, or around
+// its vertex). Returns false when `face` does not contain the point.
+bool point_in_face(const TriMesh& mesh, const MeshPoint& p, int face, MeshPoint& out, double eps = 1e-9);
+
+// Faces around mesh vertex v in fan order (following the adjacency across the edge that ends at v).
+// `closed` tells whether the fan wraps around (interior vertex) or runs boundary to boundary.
+void vertex_fan(const TriMesh& mesh, int v, std::vector<int>& faces, bool& closed);
+
+}  // namespace splinekit::surface
