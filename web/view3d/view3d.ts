@@ -1,0 +1,409 @@
+import {
+  BufferAttribute,
+  BufferGeometry,
+  Color,
+  DirectionalLight,
+  DoubleSide,
+  Group,
+  HemisphereLight,
+  Mesh,
+  MeshStandardMaterial,
+  PerspectiveCamera,
+  Scene,
+  Sphere,
+  Vector2,
+  Vector3,
+  WebGLRenderer,
+  MOUSE,
+} from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { Emitter } from '../app/events.js';
+import { TriangleBVH, type RayHit } from './bvh.js';
+
+/** A pointer on the 3D view: canvas CSS pixels plus the modifier keys. */
+export interface Pointer3D {
+  sx: number;
+  sy: number;
+  button: number;
+  shiftKey: boolean;
+  altKey: boolean;
+  /** Ctrl, or Cmd on macOS. */
+  modKey: boolean;
+  /** The time of the event (ms), for double-click detection. */
+  time: number;
+}
+
+/**
+ * Who gets pointer input on the 3D view (the surface mode). A left-button gesture the input does
+ * not claim orbits the camera; a press and release without moving is a click.
+ */
+export interface View3DInput {
+  /** Return true to own the drag (the camera stays put). */
+  pointerDown(p: Pointer3D): boolean;
+  /** A drag the input owns. */
+  pointerDrag(p: Pointer3D): void;
+  /** The claimed gesture ended (`moved`: it went past the click slop; button -1: cancelled). */
+  pointerUp(p: Pointer3D, moved: boolean): void;
+  /** The pointer moved with no button down. */
+  hover(p: Pointer3D): void;
+  pointerLeave(): void;
+  /** A press and release without moving that no pointerDown claimed. */
+  click(p: Pointer3D): void;
+  doubleClick(p: Pointer3D): void;
+}
+
+export interface View3DEvents extends Record<string, unknown> {
+  /** The camera moved or the canvas was resized. */
+  view: null;
+  /** A frame was drawn. */
+  render: number;
+}
+
+/** Mesh material and background colors. */
+const BACKGROUND = 0x1b1d21;
+const MESH_COLOR = 0xc4bcaf;
+/** Pixels the pointer may travel and still make a click. */
+const CLICK_SLOP = 4;
+
+/** A mesh shown by the view: its geometry in file order, so face indices are the file's. */
+export interface ShownMesh {
+  positions: Float32Array;
+  triangles: Uint32Array;
+  /** Smooth vertex normals (three's, area weighted). */
+  normals: Float32Array;
+  center: Vector3;
+  radius: number;
+  /** Bounding box: min x y z, max x y z. */
+  box: [number, number, number, number, number, number];
+}
+
+/**
+ * A three.js 3D view: a perspective camera with orbit controls (orbit, zoom at the cursor, pan),
+ * a hemisphere light and a headlight that follows the camera, one triangle mesh built from file
+ * positions and triangles (face i of the geometry is face i of the file), and a layer for what a
+ * mode draws on it. Renders on demand. Picking goes through a BVH and answers mesh points.
+ */
+export class View3D {
+  readonly events = new Emitter<View3DEvents>();
+  readonly renderer: WebGLRenderer;
+  readonly scene = new Scene();
+  readonly camera = new PerspectiveCamera(40, 1, 0.01, 100);
+  readonly controls: OrbitControls;
+  /** Where modes add their objects (curves, points). */
+  readonly layer = new Group();
+  readonly material: MeshStandardMaterial;
+  input: View3DInput | null = null;
+  /** Size of the canvas in CSS pixels. */
+  readonly size = new Vector2(1, 1);
+
+  private meshObject: Mesh | null = null;
+  private shown: ShownMesh | null = null;
+  private bvh: TriangleBVH | null = null;
+  private frameRequest = 0;
+  private visible = true;
+  private gesture: { id: number; sx: number; sy: number; claimed: boolean; moved: boolean } | null = null;
+
+  constructor(readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, powerPreference: 'high-performance' });
+    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
+    this.renderer.setClearColor(new Color(BACKGROUND), 1);
+    const canvas = this.renderer.domElement;
+    canvas.className = 'view3d-canvas';
+    canvas.tabIndex = 0;
+    canvas.setAttribute('aria-label', '3D view of the mesh');
+    canvas.dataset.testid = 'view3d';
+    container.appendChild(canvas);
+
+    this.scene.add(new HemisphereLight(0xf4f6ff, 0x2e2a26, 1.1));
+    // A headlight above-left of the camera: the side the user looks at is always lit.
+    const key = new DirectionalLight(0xffffff, 2.6);
+    key.position.set(-1, 1.1, 0.55);
+    key.target.position.set(0, 0, -1);
+    this.camera.add(key, key.target);
+    this.scene.add(this.camera, this.layer);
+
+    this.material = new MeshStandardMaterial({
+      color: MESH_COLOR,
+      roughness: 0.78,
+      metalness: 0,
+      side: DoubleSide,
+      // Push the surface back in depth so curves drawn on it win the depth test.
+      polygonOffset: true,
+      polygonOffsetFactor: 1,
+      polygonOffsetUnits: 1,
+    });
+
+    // Our listeners go first: a gesture the mode claims disables the controls before they see it.
+    this.listen(canvas);
+    this.controls = new OrbitControls(this.camera, canvas);
+    this.controls.enableDamping = false;
+    this.controls.zoomToCursor = true;
+    this.controls.screenSpacePanning = true;
+    this.controls.mouseButtons = { LEFT: MOUSE.ROTATE, MIDDLE: MOUSE.ROTATE, RIGHT: MOUSE.PAN };
+    this.controls.addEventListener('change', () => this.viewChanged());
+
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+  }
+
+  get canvas(): HTMLCanvasElement {
+    return this.renderer.domElement;
+  }
+
+  /** The shown mesh's data, or null. */
+  get mesh(): ShownMesh | null {
+    return this.shown;
+  }
+
+  /** Shows or hides the canvas (three sets an inline display: the attribute `hidden` would not do). */
+  setVisible(visible: boolean): void {
+    this.visible = visible;
+    this.canvas.style.display = visible ? 'block' : 'none';
+    if (visible) {
+      this.resize();
+      this.requestRender();
+    }
+  }
+
+  /**
+   * Shows a mesh (positions xyz, triangles in file order); returns its smooth normals. `fit`
+   * moves the camera to frame it.
+   */
+  setMesh(positions: Float32Array, triangles: Uint32Array, fit = true): ShownMesh {
+    this.clearMesh();
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new BufferAttribute(positions, 3));
+    geometry.setIndex(new BufferAttribute(triangles, 1));
+    geometry.computeVertexNormals();
+    geometry.computeBoundingSphere();
+    geometry.computeBoundingBox();
+    const bb = geometry.boundingBox!;
+    const sphere = geometry.boundingSphere ?? new Sphere(new Vector3(), 1);
+    this.meshObject = new Mesh(geometry, this.material);
+    this.meshObject.name = 'surface-mesh';
+    this.scene.add(this.meshObject);
+    this.bvh = new TriangleBVH(positions, triangles);
+    this.shown = {
+      positions,
+      triangles,
+      normals: geometry.getAttribute('normal').array as Float32Array,
+      center: bb.getCenter(new Vector3()),
+      box: [bb.min.x, bb.min.y, bb.min.z, bb.max.x, bb.max.y, bb.max.z],
+      radius: Math.max(sphere.radius, 1e-9),
+    };
+    if (fit) this.fit();
+    this.requestRender();
+    return this.shown;
+  }
+
+  clearMesh(): void {
+    if (!this.meshObject) return;
+    this.scene.remove(this.meshObject);
+    this.meshObject.geometry.dispose();
+    this.meshObject = null;
+    this.shown = null;
+    this.bvh = null;
+    this.requestRender();
+  }
+
+  setFlatShading(flat: boolean): void {
+    if (this.material.flatShading === flat) return;
+    this.material.flatShading = flat;
+    this.material.needsUpdate = true;
+    this.requestRender();
+  }
+
+  /** Frames the mesh: its bounding box fills the view, seen from the front and a little above. */
+  fit(): void {
+    const m = this.shown;
+    if (!m) return;
+    const dir = new Vector3(0.3, 0.4, 1).normalize();
+    const up = new Vector3(0, 1, 0);
+    const right = new Vector3().crossVectors(up, dir).normalize();
+    const camUp = new Vector3().crossVectors(dir, right);
+    const tanY = Math.tan((this.camera.fov * Math.PI) / 360);
+    const tanX = tanY * (this.size.x / Math.max(this.size.y, 1));
+    // The camera sits at center + d·dir: every vertex (a sample of them on big meshes) must be
+    // inside both half-angles of the view.
+    let d = 0;
+    const P = m.positions, stride = 3 * Math.max(1, Math.floor(P.length / 3 / 60000));
+    const [cx, cy, cz] = [m.center.x, m.center.y, m.center.z];
+    for (let i = 0; i + 2 < P.length; i += stride) {
+      const x = P[i] - cx, y = P[i + 1] - cy, z = P[i + 2] - cz;
+      const toward = x * dir.x + y * dir.y + z * dir.z;
+      const across = Math.abs(x * right.x + y * right.y + z * right.z), above = Math.abs(x * camUp.x + y * camUp.y + z * camUp.z);
+      d = Math.max(d, toward + across / tanX, toward + above / tanY);
+    }
+    d = Math.max(d * 1.12, m.radius * 0.1);
+    this.controls.target.copy(m.center);
+    this.camera.position.copy(m.center).addScaledVector(dir, d);
+    this.camera.up.copy(up);
+    this.controls.update();
+    this.viewChanged();
+  }
+
+  /** Moves the camera towards the target by `factor` (> 1 zooms in). */
+  zoom(factor: number): void {
+    const offset = this.camera.position.clone().sub(this.controls.target).multiplyScalar(1 / factor);
+    this.camera.position.copy(this.controls.target).add(offset);
+    this.controls.update();
+    this.viewChanged();
+  }
+
+  /** Canvas CSS pixels of a world point, with its depth in front of the camera (≤ 0: behind). */
+  project(x: number, y: number, z: number): { sx: number; sy: number; depth: number } {
+    const v = new Vector3(x, y, z);
+    const depth = -v.clone().applyMatrix4(this.camera.matrixWorldInverse).z;
+    v.project(this.camera);
+    return { sx: ((v.x + 1) / 2) * this.size.x, sy: ((1 - v.y) / 2) * this.size.y, depth };
+  }
+
+  /** The ray under a canvas point (origin, unit direction). */
+  ray(sx: number, sy: number): { origin: Vector3; dir: Vector3 } {
+    this.camera.updateMatrixWorld();
+    const ndc = new Vector3((sx / this.size.x) * 2 - 1, 1 - (sy / this.size.y) * 2, 0.5);
+    const origin = this.camera.position.clone();
+    const dir = ndc.unproject(this.camera).sub(origin).normalize();
+    return { origin, dir };
+  }
+
+  /** The mesh point under a canvas point (nearest hit, either side), with the hit's position. */
+  pick(sx: number, sy: number): (RayHit & { point: Vector3 }) | null {
+    if (!this.bvh) return null;
+    const { origin, dir } = this.ray(sx, sy);
+    const hit = this.bvh.raycast(origin.x, origin.y, origin.z, dir.x, dir.y, dir.z);
+    return hit ? { ...hit, point: origin.addScaledVector(dir, hit.t) } : null;
+  }
+
+  /**
+   * Whether a point on (or just above) the surface is seen: nothing of the mesh between it and
+   * the camera, up to `slack` (world units) in front of it.
+   */
+  isVisible(x: number, y: number, z: number, slack: number): boolean {
+    if (!this.bvh) return true;
+    const origin = this.camera.position;
+    const dir = new Vector3(x, y, z).sub(origin);
+    const length = dir.length();
+    if (length <= slack) return true;
+    dir.divideScalar(length);
+    const hit = this.bvh.raycast(origin.x, origin.y, origin.z, dir.x, dir.y, dir.z, length - slack);
+    return hit === null;
+  }
+
+  /** World units per CSS pixel at a point's depth (for pick tolerances and offsets). */
+  worldPerPixel(depth: number): number {
+    const fov = (this.camera.fov * Math.PI) / 180;
+    return (2 * Math.tan(fov / 2) * Math.max(depth, 1e-9)) / Math.max(this.size.y, 1);
+  }
+
+  requestRender(): void {
+    if (this.frameRequest) return;
+    this.frameRequest = requestAnimationFrame((time) => {
+      this.frameRequest = 0;
+      this.render();
+      this.events.emit('render', time);
+    });
+  }
+
+  /** Resolves once the next frame has been drawn. */
+  nextFrame(): Promise<void> {
+    return new Promise((resolve) => {
+      const off = this.events.on('render', () => {
+        off();
+        resolve();
+      });
+      this.requestRender();
+    });
+  }
+
+  render(): void {
+    if (!this.visible) return;
+    this.updateClipping();
+    this.renderer.render(this.scene, this.camera);
+  }
+
+  dispose(): void {
+    cancelAnimationFrame(this.frameRequest);
+    this.controls.dispose();
+    this.clearMesh();
+    this.material.dispose();
+    this.renderer.dispose();
+    this.canvas.remove();
+  }
+
+  /** Near and far planes around what is in view, for depth precision at any zoom. */
+  private updateClipping(): void {
+    const m = this.shown;
+    const distance = this.camera.position.distanceTo(m?.center ?? this.controls.target);
+    const radius = m?.radius ?? 1;
+    const near = Math.max(distance - radius * 1.5, distance * 0.002, radius * 1e-4);
+    const far = distance + radius * 3;
+    if (Math.abs(this.camera.near - near) > 1e-12 || Math.abs(this.camera.far - far) > 1e-12) {
+      this.camera.near = near;
+      this.camera.far = far;
+      this.camera.updateProjectionMatrix();
+    }
+  }
+
+  private viewChanged(): void {
+    this.events.emit('view', null);
+    this.requestRender();
+  }
+
+  private resize(): void {
+    const w = this.container.clientWidth, h = this.container.clientHeight;
+    if (w === 0 || h === 0 || !this.visible) return;
+    if (w === this.size.x && h === this.size.y) return;
+    this.size.set(w, h);
+    this.renderer.setSize(w, h);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.viewChanged();
+  }
+
+  private pointer(e: PointerEvent | MouseEvent): Pointer3D {
+    const r = this.canvas.getBoundingClientRect();
+    return { sx: e.clientX - r.left, sy: e.clientY - r.top, button: e.button, shiftKey: e.shiftKey, altKey: e.altKey, modKey: e.ctrlKey || e.metaKey, time: e.timeStamp };
+  }
+
+  private listen(canvas: HTMLCanvasElement): void {
+    canvas.addEventListener('pointerdown', (e) => {
+      canvas.focus({ preventScroll: true });
+      if (this.gesture) return;
+      const p = this.pointer(e);
+      const claimed = e.button === 0 && !e.ctrlKey && !e.metaKey && (this.input?.pointerDown(p) ?? false);
+      if (claimed) {
+        this.controls.enabled = false; // until the gesture ends
+        canvas.setPointerCapture(e.pointerId);
+      }
+      this.gesture = { id: e.pointerId, sx: p.sx, sy: p.sy, claimed, moved: false };
+    });
+    canvas.addEventListener('pointermove', (e) => {
+      const g = this.gesture, p = this.pointer(e);
+      if (!g || g.id !== e.pointerId) {
+        if (!g) this.input?.hover(p);
+        return;
+      }
+      if (!g.moved && Math.hypot(p.sx - g.sx, p.sy - g.sy) > CLICK_SLOP) g.moved = true;
+      if (g.claimed && g.moved) this.input?.pointerDrag(p);
+    });
+    const end = (e: PointerEvent, cancelled: boolean) => {
+      const g = this.gesture;
+      if (!g || g.id !== e.pointerId) return;
+      this.gesture = null;
+      const p = this.pointer(e);
+      if (g.claimed) {
+        this.controls.enabled = true;
+        if (canvas.hasPointerCapture(e.pointerId)) canvas.releasePointerCapture(e.pointerId);
+        this.input?.pointerUp({ ...p, button: cancelled ? -1 : p.button }, g.moved);
+      } else if (!g.moved && !cancelled && e.button === 0) this.input?.click(p);
+    };
+    canvas.addEventListener('pointerup', (e) => end(e, false));
+    canvas.addEventListener('pointercancel', (e) => end(e, true));
+    canvas.addEventListener('pointerleave', () => {
+      if (!this.gesture) this.input?.pointerLeave();
+    });
+    canvas.addEventListener('dblclick', (e) => this.input?.doubleClick(this.pointer(e)));
+    canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  }
+}
