@@ -53,3 +53,21 @@ export { buildDomain, type Domain, type DomainOptions } from './skin/domain.js';
 export { SkinWeights, type DomainWeightKind } from './skin/weights.js';
 export { computeDomainWeights, domainWeights, outlineSamples, type DomainWeightsInput } from './skin/auto-weights.js';
 export { animatedSVG, interpolateMatrix, poseAt, type AnimationOptions, type Keyframe } from './skin/animation.js';
+export {
+  SurfaceMesh,
+  type GeodesicPath,
+  type MeshInfo,
+  type MeshPoint,
+  type MeshPointLike,
+} from './surface/mesh.js';
+export { parseMesh, meshFormatOf, DEFAULT_MAX_MESH_BYTES, type MeshArrays, type MeshFormat, type MeshParseOptions } from './surface/mesh-io.js';
+export {
+  SurfaceSpline,
+  evalBezier,
+  traceBezier,
+  type SurfaceScheme,
+  type SurfaceSplineJSON,
+  type TraceOptions,
+  type TracedCurve,
+} from './surface/spline.js';
+export { mapSplines, type SvgMapOptions } from './surface/svg-map.js';

@@ -63,7 +63,42 @@ export interface SkinRigHandle extends EmbindObject {
   errorMessage(): string;
 }
 
+/** wasm/bindings/surface_bindings.cpp — SurfaceMeshHandle (see the flow comment there). */
+export interface SurfaceMeshHandle extends EmbindObject {
+  resizeMesh(vertices: number, faces: number): void;
+  positionsIn(): Float64Array;
+  trianglesIn(): Int32Array;
+  build(): number;
+  report(which: number): number;
+  bytes(): number;
+  scale(): number;
+  resizePoints(n: number): void;
+  pointsIn(): Float64Array;
+  resizeXY(n: number): void;
+  xyIn(): Float64Array;
+  pointsOut(): Float64Array;
+  xyzOut(): Float64Array;
+  offsetsOut(): Int32Array;
+  length(): number;
+  milliseconds(): number;
+  curveMilliseconds(curve: number): number;
+  error(): string;
+  shortestPath(): number;
+  pathAt(t: number): number;
+  straightest(dx: number, dy: number, dz: number, length: number): number;
+  trace(curves: number, scheme: number, levels: number, adaptiveDegrees: number): number;
+  evalCurve(t: number, scheme: number, levels: number, adaptiveDegrees: number): number;
+  splitCurve(t: number, scheme: number, levels: number, adaptiveDegrees: number): number;
+  moveAnchor(count: number, index: number, f: number, u: number, v: number): number;
+  moveHandle(count: number, index: number, f: number, u: number, v: number, smooth: boolean): number;
+  smoothAnchor(count: number, index: number): number;
+  rotateScale(count: number, f: number, u: number, v: number, angle: number, scale: number): number;
+  translateSpline(count: number, f0: number, u0: number, v0: number, f1: number, u1: number, v1: number): number;
+  mapPoints(f: number, u: number, v: number, ux: number, uy: number, uz: number, rotation: number, scale: number): number;
+}
+
 export interface SplinekitCoreModule {
+  SurfaceMeshHandle: { new (): SurfaceMeshHandle };
   SkinRigHandle: { new (): SkinRigHandle };
   SplineSetHandle: { new (): SplineSetHandle };
   BezierScratch: { new (): BezierScratch };

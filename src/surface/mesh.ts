@@ -1,0 +1,255 @@
+/**
+ * A triangle mesh to draw curves on (b/Surf §5.1), held in the wasm core with its adjacency and
+ * search graph, and the geodesic primitives over it. Indices and barycentric coordinates always
+ * refer to the file's vertex and face order, whatever the core repaired inside (welded duplicate
+ * positions, dropped unused vertices, re-oriented faces, split non-manifold vertices).
+ */
+import { core } from '../core/module.js';
+import { SplinekitError, checkStatus } from '../core/errors.js';
+import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
+import { parseMesh, type MeshParseOptions } from './mesh-io.js';
+
+/** A point on a face: (1−u−v)·p0 + u·p1 + v·p2 of the face's vertices, in file order. */
+export interface MeshPoint {
+  face: number;
+  uv: [number, number];
+}
+/** A mesh point, or a vertex index (file order). */
+export type MeshPointLike = MeshPoint | number;
+
+export interface MeshInfo {
+  /** Vertices and faces (triangles after fan triangulation) as in the file. */
+  vertices: number;
+  faces: number;
+  /** Vertices the algorithms use: after welding and dropping unused ones, plus non-manifold splits. */
+  usedVertices: number;
+  weldedVertices: number;
+  unreferencedVertices: number;
+  degenerateFaces: number;
+  nonManifoldEdges: number;
+  nonManifoldVertices: number;
+  flippedFaces: number;
+  boundaryLoops: number;
+  components: number;
+  /** Bytes of wasm memory the mesh structures hold (positions, faces, adjacency, search graph). */
+  bytes: number;
+  /** One line per repair or oddity, e.g. "welded 57,653 vertices that share a position". */
+  warnings: string[];
+}
+
+/** A geodesic path on the mesh: its start, every edge crossing, its end. */
+export interface GeodesicPath {
+  length: number;
+  points: MeshPoint[];
+  /** x, y, z of each point. */
+  xyz: Float64Array;
+}
+
+const REPORT = {
+  fileVertices: 0,
+  fileFaces: 1,
+  usedVertices: 2,
+  welded: 3,
+  unreferenced: 4,
+  degenerate: 5,
+  nonManifoldEdges: 6,
+  nonManifoldVertices: 7,
+  flipped: 8,
+  nonOrientable: 9,
+  boundaryEdges: 10,
+  boundaryLoops: 11,
+  components: 12,
+} as const;
+
+function count(n: number, what: string): string {
+  return `${n.toLocaleString('en-US')} ${what}`;
+}
+
+export class SurfaceMesh {
+  readonly info: MeshInfo;
+  /** File positions (3 per vertex) and triangles (3 per face). */
+  readonly positions: Float64Array;
+  readonly triangles: Int32Array;
+  /** Bounding-box diagonal. */
+  readonly scale: number;
+  /** @internal the wasm handle (shared with SurfaceSpline and mapSplines). */
+  readonly handle: SurfaceMeshHandle;
+  private vertexCorner: Int32Array | null = null;
+  private disposed = false;
+
+  private constructor(handle: SurfaceMeshHandle, positions: Float64Array, triangles: Int32Array) {
+    this.handle = handle;
+    this.positions = positions;
+    this.triangles = triangles;
+    this.scale = handle.scale();
+    const r = (k: number) => handle.report(k);
+    const info: MeshInfo = {
+      vertices: r(REPORT.fileVertices),
+      faces: r(REPORT.fileFaces),
+      usedVertices: r(REPORT.usedVertices),
+      weldedVertices: r(REPORT.welded),
+      unreferencedVertices: r(REPORT.unreferenced),
+      degenerateFaces: r(REPORT.degenerate),
+      nonManifoldEdges: r(REPORT.nonManifoldEdges),
+      nonManifoldVertices: r(REPORT.nonManifoldVertices),
+      flippedFaces: r(REPORT.flipped),
+      boundaryLoops: r(REPORT.boundaryLoops),
+      components: r(REPORT.components),
+      bytes: handle.bytes(),
+      warnings: [],
+    };
+    const w = info.warnings;
+    if (info.weldedVertices) w.push(`welded ${count(info.weldedVertices, 'vertices')} that share a position with an earlier one`);
+    if (info.unreferencedVertices) w.push(`ignored ${count(info.unreferencedVertices, 'vertices')} that no face uses`);
+    if (info.degenerateFaces) w.push(`${count(info.degenerateFaces, 'faces')} repeat a vertex: curves do not cross them`);
+    if (info.nonManifoldEdges) w.push(`${count(info.nonManifoldEdges, 'edges')} have more than two faces: treated as boundaries`);
+    if (info.nonManifoldVertices) w.push(`${count(info.nonManifoldVertices, 'vertices')} join separate fans of faces: split`);
+    if (info.flippedFaces) w.push(`${count(info.flippedFaces, 'faces')} were wound against their neighbours: re-oriented`);
+    if (r(REPORT.nonOrientable)) w.push(`the surface is not orientable: cut along ${count(r(REPORT.nonOrientable), 'edges')}`);
+    if (info.components > 1) w.push(`the mesh has ${info.components} separate parts: curves cannot cross between them`);
+    this.info = info;
+  }
+
+  /** A mesh from flat arrays (3 numbers per vertex, 3 vertex indices per triangle). */
+  static fromArrays(positions: ArrayLike<number>, triangles: ArrayLike<number>): SurfaceMesh {
+    if (positions.length % 3 !== 0) throw new SplinekitError('invalid-input', `positions: ${positions.length} numbers is not a multiple of 3`);
+    if (triangles.length % 3 !== 0) throw new SplinekitError('invalid-input', `triangles: ${triangles.length} indices is not a multiple of 3`);
+    const m = core();
+    const handle = new m.SurfaceMeshHandle();
+    try {
+      handle.resizeMesh(positions.length / 3, triangles.length / 3);
+      handle.positionsIn().set(positions);
+      const t = handle.trianglesIn();
+      for (let i = 0; i < triangles.length; i++) {
+        const v = triangles[i];
+        if (!Number.isInteger(v)) throw new SplinekitError('invalid-input', `triangle ${Math.floor(i / 3)} has a vertex index that is not an integer (${v})`);
+        t[i] = v;
+      }
+      checkStatus(handle.build(), 'invalid mesh', () => handle.error());
+    } catch (err) {
+      handle.delete();
+      throw err;
+    }
+    return new SurfaceMesh(handle, Float64Array.from(positions), Int32Array.from(triangles));
+  }
+
+  /** Parses a mesh file (OBJ, OFF, PLY, STL, glTF, GLB) and builds it. */
+  static async load(data: ArrayBuffer | Uint8Array | string, fileName: string, options?: MeshParseOptions): Promise<SurfaceMesh> {
+    const arrays = await parseMesh(data, fileName, options);
+    try {
+      return SurfaceMesh.fromArrays(arrays.positions, arrays.triangles);
+    } catch (err) {
+      if (err instanceof SplinekitError) throw new SplinekitError(err.code, `${fileName}: ${err.message}`, { cause: err });
+      throw err;
+    }
+  }
+
+  get faceCount(): number {
+    return this.triangles.length / 3;
+  }
+
+  /** A validated mesh point. */
+  point(face: number, u: number, v: number): MeshPoint {
+    const p: MeshPoint = { face, uv: [u, v] };
+    this.check(p, 'point');
+    return p;
+  }
+
+  /** The point at vertex `v` (file index), on the first face that uses it. */
+  vertexPoint(v: number): MeshPoint {
+    if (!Number.isInteger(v) || v < 0 || v >= this.positions.length / 3)
+      throw new SplinekitError('invalid-input', `vertex ${v} does not exist (the mesh has ${this.positions.length / 3} vertices)`);
+    if (!this.vertexCorner) {
+      const corner = new Int32Array(this.positions.length / 3).fill(-1);
+      for (let i = this.triangles.length - 1; i >= 0; i--) corner[this.triangles[i]] = i;
+      this.vertexCorner = corner;
+    }
+    const at = this.vertexCorner[v];
+    if (at < 0) throw new SplinekitError('invalid-input', `vertex ${v} is not used by any face`);
+    const k = at % 3;
+    return { face: (at - k) / 3, uv: [k === 1 ? 1 : 0, k === 2 ? 1 : 0] };
+  }
+
+  /** A mesh point from a point or a vertex index. */
+  resolve(p: MeshPointLike, what = 'point'): MeshPoint {
+    if (typeof p === 'number') return this.vertexPoint(p);
+    this.check(p, what);
+    return p;
+  }
+
+  xyz(p: MeshPointLike): [number, number, number] {
+    const q = this.resolve(p);
+    const t = this.triangles, x = this.positions, f = 3 * q.face;
+    const w0 = 1 - q.uv[0] - q.uv[1], w1 = q.uv[0], w2 = q.uv[1];
+    const a = 3 * t[f], b = 3 * t[f + 1], c = 3 * t[f + 2];
+    return [0, 1, 2].map((i) => w0 * x[a + i] + w1 * x[b + i] + w2 * x[c + i]) as [number, number, number];
+  }
+
+  /** Unit normal of the point's face (as wound in the file). */
+  normal(p: MeshPointLike): [number, number, number] {
+    const q = this.resolve(p);
+    const t = this.triangles, x = this.positions, f = 3 * q.face;
+    const a = 3 * t[f], b = 3 * t[f + 1], c = 3 * t[f + 2];
+    const e1 = [x[b] - x[a], x[b + 1] - x[a + 1], x[b + 2] - x[a + 2]];
+    const e2 = [x[c] - x[a], x[c + 1] - x[a + 1], x[c + 2] - x[a + 2]];
+    const n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+    const len = Math.hypot(n[0], n[1], n[2]) || 1;
+    return [n[0] / len, n[1] / len, n[2] / len];
+  }
+
+  /** The locally shortest geodesic path from a to b (b/Surf §5.1). */
+  shortestPath(a: MeshPointLike, b: MeshPointLike): GeodesicPath {
+    this.writePoints([this.resolve(a, 'start'), this.resolve(b, 'end')]);
+    checkStatus(this.handle.shortestPath(), 'shortest path', () => this.handle.error());
+    return { length: this.handle.length(), points: this.readPoints(), xyz: this.handle.xyzOut().slice() };
+  }
+
+  /** The straightest geodesic from a point in a direction (projected to the surface) for a length. */
+  straightest(from: MeshPointLike, direction: readonly [number, number, number], length: number): GeodesicPath {
+    this.writePoints([this.resolve(from, 'start')]);
+    checkStatus(this.handle.straightest(direction[0], direction[1], direction[2], length), 'straightest geodesic', () => this.handle.error());
+    return { length: this.handle.length(), points: this.readPoints(), xyz: this.handle.xyzOut().slice() };
+  }
+
+  /** Frees the wasm memory. The mesh (and splines on it) cannot be used afterwards. */
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.handle.delete();
+  }
+
+  get isDisposed(): boolean {
+    return this.disposed;
+  }
+
+  /** @internal writes points into the handle's input buffer. */
+  writePoints(points: readonly MeshPoint[]): void {
+    if (this.disposed) throw new SplinekitError('invalid-input', 'the mesh has been disposed');
+    this.handle.resizePoints(points.length);
+    const buf = this.handle.pointsIn();
+    points.forEach((p, i) => {
+      buf[3 * i] = p.face;
+      buf[3 * i + 1] = p.uv[0];
+      buf[3 * i + 2] = p.uv[1];
+    });
+  }
+
+  /** @internal reads the handle's output points. */
+  readPoints(from = 0, to?: number): MeshPoint[] {
+    const buf = this.handle.pointsOut();
+    const end = to ?? buf.length / 3;
+    const out: MeshPoint[] = [];
+    for (let i = from; i < end; i++) out.push({ face: buf[3 * i], uv: [buf[3 * i + 1], buf[3 * i + 2]] });
+    return out;
+  }
+
+  private check(p: MeshPoint, what: string): void {
+    const faces = this.triangles.length / 3;
+    if (!p || !Number.isInteger(p.face) || p.face < 0 || p.face >= faces)
+      throw new SplinekitError('invalid-input', `${what}: face ${p?.face} is not a face of the mesh (it has ${faces})`);
+    const [u, v] = p.uv ?? [];
+    const eps = 1e-9;
+    if (!Number.isFinite(u) || !Number.isFinite(v) || u < -eps || v < -eps || u + v > 1 + eps)
+      throw new SplinekitError('invalid-input', `${what}: barycentric coordinates (${u}, ${v}) lie outside face ${p.face}`);
+  }
+}

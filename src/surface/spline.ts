@@ -1,0 +1,285 @@
+/**
+ * Cubic Bézier splines on a mesh (b/Surf §3.5–§5.2): traced by RDC or OLR subdivision, uniform or
+ * adaptive, and edited with the gestures of a 2D editor (anchors carry their handles, smooth
+ * anchors keep their handles collinear, whole splines move, turn and scale about a mesh point).
+ */
+import { SplinekitError, checkStatus } from '../core/errors.js';
+import type { MeshPoint, MeshPointLike, SurfaceMesh } from './mesh.js';
+
+export type SurfaceScheme = 'olr' | 'rdc';
+
+export interface TraceOptions {
+  /** Subdivision scheme. Default 'olr'. */
+  scheme?: SurfaceScheme;
+  /** Uniform subdivision levels. Default 5 for OLR (35 points), 4 for RDC (48 geodesic segments). */
+  levels?: number;
+  /** Adaptive subdivision instead, with this angle threshold in degrees (the paper uses 5). */
+  adaptive?: number;
+}
+
+export interface TracedCurve {
+  /** The polyline on the surface: P0, every point and edge crossing, P3. */
+  points: MeshPoint[];
+  xyz: Float64Array;
+}
+
+/** @internal the binding's encoding of trace options: [scheme, levels, adaptive degrees (0: off)]. */
+export function traceArgs(options: TraceOptions = {}): [number, number, number] {
+  const scheme = options.scheme ?? 'olr';
+  if (scheme !== 'olr' && scheme !== 'rdc') throw new SplinekitError('invalid-input', `unknown scheme "${String(scheme)}" (use "olr" or "rdc")`);
+  const levels = options.levels ?? (scheme === 'olr' ? 5 : 4);
+  if (!Number.isInteger(levels) || levels < 0 || levels > 12) throw new SplinekitError('invalid-input', `levels must be an integer from 0 to 12 (got ${levels})`);
+  const adaptive = options.adaptive ?? 0;
+  if (options.adaptive !== undefined && !(adaptive > 0 && adaptive < 180))
+    throw new SplinekitError('invalid-input', `the adaptive angle must lie between 0 and 180 degrees (got ${adaptive})`);
+  return [scheme === 'olr' ? 0 : 1, levels, adaptive];
+}
+
+/** Traces one cubic Bézier curve given by 4 control points on the mesh. */
+export function traceBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], options?: TraceOptions): TracedCurve & { ms: number } {
+  if (controls.length !== 4) throw new SplinekitError('invalid-input', `a cubic curve needs 4 control points (got ${controls.length})`);
+  mesh.writePoints(controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
+  checkStatus(mesh.handle.trace(1, ...traceArgs(options)), 'trace', () => mesh.handle.error());
+  return { points: mesh.readPoints(), xyz: mesh.handle.xyzOut().slice(), ms: mesh.handle.curveMilliseconds(0) };
+}
+
+/** The point at parameter t of a cubic curve on the mesh (§4.1.2, §4.2.2). */
+export function evalBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], t: number, options?: TraceOptions): MeshPoint {
+  if (controls.length !== 4) throw new SplinekitError('invalid-input', `a cubic curve needs 4 control points (got ${controls.length})`);
+  mesh.writePoints(controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
+  checkStatus(mesh.handle.evalCurve(t, ...traceArgs(options)), 'evaluate', () => mesh.handle.error());
+  return mesh.readPoints()[0];
+}
+
+export interface SurfaceSplineJSON {
+  closed: boolean;
+  /** Control points: anchors at 3k, handles between (3n+1 open, 3n closed). */
+  points: MeshPoint[];
+  /** Per anchor: its handles stay collinear (C1) when one of them moves. */
+  smooth: boolean[];
+}
+
+function clonePoint(p: MeshPoint): MeshPoint {
+  return { face: p.face, uv: [p.uv[0], p.uv[1]] };
+}
+
+export class SurfaceSpline {
+  readonly mesh: SurfaceMesh;
+  private _points: MeshPoint[];
+  private _smooth: boolean[];
+  readonly closed: boolean;
+
+  constructor(mesh: SurfaceMesh, json: SurfaceSplineJSON) {
+    this.mesh = mesh;
+    const n = json.points?.length ?? 0;
+    const closed = !!json.closed;
+    if (closed ? n < 3 || n % 3 !== 0 : n < 4 || n % 3 !== 1)
+      throw new SplinekitError('invalid-input', `a ${closed ? 'closed' : 'open'} spline needs ${closed ? '3n' : '3n+1'} control points (got ${n})`);
+    this._points = json.points.map((p, i) => clonePoint(mesh.resolve(p, `control point ${i}`)));
+    this.closed = closed;
+    const anchors = closed ? n / 3 : (n - 1) / 3 + 1;
+    this._smooth = Array.from({ length: anchors }, (_, i) => !!json.smooth?.[i]);
+  }
+
+  /** A spline through the anchors with straight handles: each segment's handles at 1/3 and 2/3 of its geodesic. */
+  static fromPolygon(mesh: SurfaceMesh, anchors: readonly MeshPointLike[], closed = false): SurfaceSpline {
+    if (anchors.length < 2) throw new SplinekitError('invalid-input', 'a spline needs at least 2 anchors');
+    const a = anchors.map((p, i) => mesh.resolve(p, `anchor ${i}`));
+    const points: MeshPoint[] = [];
+    const segments = closed ? a.length : a.length - 1;
+    for (let s = 0; s < segments; s++) {
+      const [h1, h2] = thirds(mesh, a[s], a[(s + 1) % a.length]);
+      points.push(a[s], h1, h2);
+    }
+    if (!closed) points.push(a[a.length - 1]);
+    return new SurfaceSpline(mesh, { closed, points, smooth: a.map(() => false) });
+  }
+
+  static fromJSON(mesh: SurfaceMesh, json: SurfaceSplineJSON): SurfaceSpline {
+    return new SurfaceSpline(mesh, json);
+  }
+
+  toJSON(): SurfaceSplineJSON {
+    return { closed: this.closed, points: this._points.map(clonePoint), smooth: [...this._smooth] };
+  }
+
+  get points(): readonly MeshPoint[] {
+    return this._points;
+  }
+
+  get segmentCount(): number {
+    return this.closed ? this._points.length / 3 : (this._points.length - 1) / 3;
+  }
+
+  /** The 4 control points of segment s. */
+  segment(s: number): MeshPoint[] {
+    this.checkSegment(s);
+    const n = this._points.length;
+    return [0, 1, 2, 3].map((i) => this._points[(3 * s + i) % n]);
+  }
+
+  isSmooth(anchor: number): boolean {
+    return this._smooth[this.anchorIndex(anchor)];
+  }
+
+  /** Makes an anchor smooth (its handles turn to be collinear) or a corner. */
+  setSmooth(anchor: number, smooth: boolean): void {
+    const k = this.anchorIndex(anchor);
+    this._smooth[k] = smooth;
+    if (smooth) this.editAround(anchor, (count, at) => this.mesh.handle.smoothAnchor(count, at), 'smooth anchor');
+  }
+
+  /** Moves an anchor; its handles follow by parallel transport (§5.2). */
+  moveAnchor(index: number, to: MeshPointLike): void {
+    this.anchorIndex(index);
+    const p = this.mesh.resolve(to, 'target');
+    this.editAround(index, (count, at) => this.mesh.handle.moveAnchor(count, at, p.face, p.uv[0], p.uv[1]), 'move anchor');
+  }
+
+  /** Moves a handle; at a smooth anchor the opposite handle follows along the straightest geodesic. */
+  moveHandle(index: number, to: MeshPointLike): void {
+    if (index < 0 || index >= this._points.length || index % 3 === 0)
+      throw new SplinekitError('invalid-input', `control point ${index} is not a handle of the spline`);
+    const p = this.mesh.resolve(to, 'target');
+    const anchor = index % 3 === 1 ? index - 1 : index + 1;
+    const hasOpposite = this.closed || (anchor > 0 && anchor < this._points.length - 1);
+    const smooth = hasOpposite && this._smooth[this.anchorIndex(anchor % this._points.length)];
+    this.editAround(anchor % this._points.length, (count, at) =>
+      this.mesh.handle.moveHandle(count, at + (index - anchor), p.face, p.uv[0], p.uv[1], smooth), 'move handle');
+  }
+
+  /**
+   * Point insertion (§4.1.3/§4.2.3): splits segment s at t into two segments through the curve's
+   * point at t, keeping its end tangents. Returns the new anchor's control-point index.
+   */
+  insert(segment: number, t: number, options?: TraceOptions): number {
+    this.checkSegment(segment);
+    this.mesh.writePoints(this.segment(segment));
+    checkStatus(this.mesh.handle.splitCurve(t, ...traceArgs(options)), 'insert point', () => this.mesh.handle.error());
+    const seven = this.mesh.readPoints();
+    const at = 3 * segment;
+    const n = this._points.length;
+    if (this.closed && at + 3 === n) {
+      this._points.splice(at, 3, ...seven.slice(0, 6));
+      this._points[0] = seven[6];
+    } else {
+      this._points.splice(at, 4, ...seven);
+    }
+    this._smooth.splice(segment + 1, 0, true);
+    return at + 3;
+  }
+
+  /** Deletes an anchor with its handles; the segments on both sides merge. */
+  remove(anchor: number): void {
+    const k = this.anchorIndex(anchor);
+    if (this.segmentCount < 2 || (this.closed && this.segmentCount < 2))
+      throw new SplinekitError('invalid-input', 'a spline keeps at least one segment');
+    const n = this._points.length;
+    if (this.closed) {
+      const drop = [(anchor - 1 + n) % n, anchor, (anchor + 1) % n].sort((a, b) => b - a);
+      for (const i of drop) this._points.splice(i, 1);
+      if (anchor === 0) this._points.push(...this._points.splice(0, 2)); // keep an anchor first
+    } else if (anchor === 0) {
+      this._points.splice(0, 3);
+    } else if (anchor === n - 1) {
+      this._points.splice(n - 3, 3);
+    } else {
+      this._points.splice(anchor - 1, 3);
+    }
+    this._smooth.splice(k, 1);
+  }
+
+  /** Extends an open spline by one segment to `p` (straight handles). */
+  appendAnchor(p: MeshPointLike): void {
+    if (this.closed) throw new SplinekitError('invalid-input', 'a closed spline has no end to extend');
+    const end = this._points[this._points.length - 1];
+    const q = this.mesh.resolve(p, 'anchor');
+    const [h1, h2] = thirds(this.mesh, end, q);
+    this._points.push(h1, h2, q);
+    this._smooth.push(false);
+  }
+
+  /** Translation that takes `from` to `to`, in normal coordinates about `from` (§5.2). */
+  translate(from: MeshPointLike, to: MeshPointLike): void {
+    const a = this.mesh.resolve(from, 'from'), b = this.mesh.resolve(to, 'to');
+    this.editAll((count) => this.mesh.handle.translateSpline(count, a.face, a.uv[0], a.uv[1], b.face, b.uv[0], b.uv[1]), 'translate');
+  }
+
+  /** Rotation by `radians` (counter-clockwise seen from outside) about `center`. */
+  rotate(center: MeshPointLike, radians: number): void {
+    const c = this.mesh.resolve(center, 'center');
+    this.editAll((count) => this.mesh.handle.rotateScale(count, c.face, c.uv[0], c.uv[1], radians, 1), 'rotate');
+  }
+
+  /** Scaling by `factor` about `center`. */
+  scale(center: MeshPointLike, factor: number): void {
+    const c = this.mesh.resolve(center, 'center');
+    this.editAll((count) => this.mesh.handle.rotateScale(count, c.face, c.uv[0], c.uv[1], 0, factor), 'scale');
+  }
+
+  /** Traces every segment; segmentStarts[s] is the index (in points) where segment s begins. */
+  trace(options?: TraceOptions): TracedCurve & { segmentStarts: Int32Array; ms: number } {
+    const segments = this.segmentCount;
+    const all: MeshPoint[] = [];
+    for (let s = 0; s < segments; s++) all.push(...this.segment(s));
+    this.mesh.writePoints(all);
+    checkStatus(this.mesh.handle.trace(segments, ...traceArgs(options)), 'trace', () => this.mesh.handle.error());
+    let ms = 0;
+    for (let s = 0; s < segments; s++) ms += this.mesh.handle.curveMilliseconds(s);
+    const segmentStarts = this.mesh.handle.offsetsOut().slice(0, segments);
+    return { points: this.mesh.readPoints(), xyz: this.mesh.handle.xyzOut().slice(), segmentStarts, ms };
+  }
+
+  /** No wasm memory of its own: the mesh holds it. Kept for symmetry with other wrappers. */
+  dispose(): void {}
+
+  // ---- internals ----
+
+  private anchorIndex(anchor: number): number {
+    const n = this._points.length;
+    if (!Number.isInteger(anchor) || anchor < 0 || anchor >= n || anchor % 3 !== 0)
+      throw new SplinekitError('invalid-input', `control point ${anchor} is not an anchor of the spline`);
+    return anchor / 3;
+  }
+
+  private checkSegment(s: number): void {
+    if (!Number.isInteger(s) || s < 0 || s >= this.segmentCount)
+      throw new SplinekitError('invalid-input', `segment ${s} does not exist (the spline has ${this.segmentCount})`);
+  }
+
+  /**
+   * Runs an edit on an open run of control points in which `anchor` has both its neighbours where
+   * they exist: closed splines are rotated so the anchor sits at index 3 (and unrotated after).
+   */
+  private editAround(anchor: number, call: (count: number, at: number) => number, what: string): void {
+    const n = this._points.length;
+    if (!this.closed) {
+      this.mesh.writePoints(this._points);
+      checkStatus(call(n, anchor), what, () => this.mesh.handle.error());
+      this._points = this.mesh.readPoints();
+      return;
+    }
+    const shift = (anchor - 3 + n) % n;
+    const run = Array.from({ length: n + 1 }, (_, i) => this._points[(shift + i) % n]);
+    this.mesh.writePoints(run);
+    checkStatus(call(n + 1, 3), what, () => this.mesh.handle.error());
+    const out = this.mesh.readPoints();
+    for (let i = 0; i < n; i++) this._points[(shift + i) % n] = out[i];
+  }
+
+  private editAll(call: (count: number) => number, what: string): void {
+    this.mesh.writePoints(this._points);
+    checkStatus(call(this._points.length), what, () => this.mesh.handle.error());
+    this._points = this.mesh.readPoints();
+  }
+}
+
+/** The points at 1/3 and 2/3 of the shortest path from a to b. */
+function thirds(mesh: SurfaceMesh, a: MeshPoint, b: MeshPoint): [MeshPoint, MeshPoint] {
+  const at = (t: number): MeshPoint => {
+    mesh.writePoints([a, b]);
+    checkStatus(mesh.handle.pathAt(t), 'handle placement', () => mesh.handle.error());
+    return mesh.readPoints()[0];
+  };
+  return [at(1 / 3), at(2 / 3)];
+}
