@@ -1,8 +1,8 @@
-import { readFileSync, writeFileSync } from 'node:fs';
+import { writeFileSync } from 'node:fs';
 import { basename } from 'node:path';
 import { DEFAULT_MAX_BYTES, SkinRig, SplinekitError, parseSVG, type AffineMatrix, type SkinHandle, type SkinRigOptions } from '../index.js';
 import { domainWeights } from '../skin/auto-weights.js';
-import { UsageError, parse, readInput, writeJSON, type Command } from './splinekit.js';
+import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './splinekit.js';
 
 const usage = `usage: splinekit skin <in.svg> --handles <handles.json> --pose <pose.json>
        [--weights shepard|harmonic|bbw] [--method fit|naive] [--flexible] [--samples N]
@@ -14,20 +14,6 @@ document space; pose.json: {"transforms":[[a,b,c,d,e,f],...]}, one SVG matrix pe
 posed). --method naive moves every control point by the deformation instead of fitting;
 --flexible relaxes G1 and angle junctions' tangent ratios after the fit. --json writes the
 splines in the schema of \`splinekit info\` plus stats (update_ms: median of 100 updates).`;
-
-function readJSON(path: string, what: string): unknown {
-  let text: string;
-  try {
-    text = readFileSync(path, 'utf8');
-  } catch (err) {
-    throw new SplinekitError('invalid-input', `cannot read ${what} ${path}: ${(err as NodeJS.ErrnoException).code ?? String(err)}`);
-  }
-  try {
-    return JSON.parse(text);
-  } catch (err) {
-    throw new SplinekitError('invalid-input', `${basename(path)}: not valid JSON: ${(err as Error).message}`);
-  }
-}
 
 function readHandles(path: string): SkinHandle[] {
   const json = readJSON(path, 'handles') as { handles?: unknown };

@@ -10,6 +10,7 @@ import { parseArgs, type ParseArgsConfig } from 'node:util';
 import { SplinekitError, init } from '../index.js';
 import { info } from './info.js';
 import { skin } from './skin.js';
+import { geodesic, trace } from './surface.js';
 
 /** Raised for wrong usage (exit code 2). */
 export class UsageError extends Error {}
@@ -20,7 +21,7 @@ export interface Command {
   run(args: string[]): Promise<void>;
 }
 
-const COMMANDS: Record<string, Command> = { info, skin };
+const COMMANDS: Record<string, Command> = { info, skin, geodesic, trace };
 
 function help(): string {
   const lines = ['usage: splinekit <command> [options]', '', 'commands:'];
@@ -53,6 +54,21 @@ export function readInput(path: string, maxBytes: number): Uint8Array {
     throw new SplinekitError('file-too-large', `${basename(path)}: ${(size / 2 ** 20).toFixed(1)} MiB is larger than the ${(maxBytes / 2 ** 20).toFixed(0)} MiB limit`);
   }
   return readFileSync(path);
+}
+
+/** Reads and parses a JSON input file; `what` names it in errors. */
+export function readJSON(path: string, what: string): unknown {
+  let text: string;
+  try {
+    text = readFileSync(path, 'utf8');
+  } catch (err) {
+    throw new SplinekitError('invalid-input', `cannot read ${what} ${path}: ${(err as NodeJS.ErrnoException).code ?? String(err)}`);
+  }
+  try {
+    return JSON.parse(text);
+  } catch (err) {
+    throw new SplinekitError('invalid-input', `${basename(path)}: not valid JSON: ${(err as Error).message}`);
+  }
 }
 
 /** Writes JSON to a file, or to stdout for "-". */

@@ -61,7 +61,7 @@ double olr_knot(int level, int k) {
 GeodesicPath CurveTracer::path(const MeshPoint& a, const MeshPoint& b) {
   GeodesicPath p;
   ++stats.shortest_paths;
-  if (!solver_.shortest_path(a, b, p)) {
+  if (!solver_.shortest_path(a, b, p, nullptr, search_)) {
     // Unreachable (another component): a degenerate path that stays at a.
     p = GeodesicPath{a, a, {a.face}, {}};
   }
@@ -245,6 +245,7 @@ ControlPolygon CurveTracer::olr_bezier(const std::array<MeshPoint, 4>& points, i
 // ---- Public -------------------------------------------------------------------------------------
 
 void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& points) {
+  search_ = options.search;
   points.assign(polygon.begin(), polygon.end());
   if (options.scheme == Scheme::kOLR) {
     if (options.adaptive) {
@@ -283,6 +284,7 @@ void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& o
 }
 
 void CurveTracer::trace(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& polyline) {
+  search_ = options.search;
   polyline.clear();
   if (options.scheme == Scheme::kRDC) {
     std::vector<const RdcNode*> stack;
@@ -294,6 +296,7 @@ void CurveTracer::trace(const ControlPolygon& polygon, const TraceOptions& optio
 }
 
 MeshPoint CurveTracer::eval(const ControlPolygon& polygon, double t, const TraceOptions& options) {
+  search_ = options.search;
   t = std::clamp(t, 0.0, 1.0);
   if (t == 0) return polygon[0];
   if (t == 1) return polygon[3];
@@ -341,6 +344,7 @@ void CurveTracer::split_leaf(const ControlPolygon& polygon, const ControlPolygon
 
 void CurveTracer::split(const ControlPolygon& polygon, double t, const TraceOptions& options, ControlPolygon& left,
                         ControlPolygon& right) {
+  search_ = options.search;
   t = std::clamp(t, 1e-6, 1 - 1e-6);
   if (options.scheme == Scheme::kRDC) {
     const RdcNode node = rdc_leaf(polygon, t, options);

@@ -26,6 +26,7 @@ struct TraceOptions {
   int levels = 5;                 // uniform subdivision levels
   double angle = 0.0872664626;    // adaptive threshold (radians; 5°)
   int max_levels = 10;            // adaptive recursion bound (resolves cusps)
+  SearchGraph search = SearchGraph::kDual;  // phase (i) graph of every shortest path (geodesic.h)
 };
 
 using ControlPolygon = std::array<MeshPoint, 4>;
@@ -54,6 +55,7 @@ class CurveTracer {
 
  private:
   GeodesicPath path(const MeshPoint& a, const MeshPoint& b);
+  SearchGraph search_ = SearchGraph::kDual;
   MeshPoint average(const MeshPoint& a, const MeshPoint& b, double w);
 
   // RDC

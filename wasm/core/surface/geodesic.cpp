@@ -171,7 +171,9 @@ int GeodesicSolver::link_face(int a, int b) const {
   return -1;
 }
 
-bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats) {
+bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats,
+                                   SearchGraph graph) {
+  const bool dual = graph == SearchGraph::kDual;
   strip.clear();
   const int nf = graph_.faces;
   static thread_local std::vector<int> sources, targets;
@@ -222,6 +224,7 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
   // The nodes of face f: its centroid and the nodes on its edges (but those on `skip_edge`).
   auto for_face_nodes = [&](int f, int skip_edge, auto&& visit) {
     visit(f);
+    if (dual) return;
     for (int k = 0; k < 3; ++k) {
       const int e = graph_.halfedge_edge[3 * f + k];
       if (e == skip_edge) continue;
@@ -254,7 +257,10 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
     key_sum -= key(u);
     // A* bound: a node whose key reaches the best arrival cannot improve it (the deque is not a
     // priority queue, so the search drains it instead of stopping at the first such node).
-    if (key(u) >= best) continue;
+    if (key(u) >= best) {
+      if (dual) break;
+      continue;
+    }
     ++visited;
     const float du = dist_[u];
     const Eigen::Vector3f pu = cache[u];
@@ -269,7 +275,17 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
         relax(node, u, du + (cache[node] - pu).norm());
       });
     };
-    if (u < nf) {
+    if (dual) {
+      if (is_target(u)) {
+        const float total = du + heuristic[u];
+        if (total < best) best = total, best_node = u, best_face = u;
+      }
+      for (int g : mesh_.adjacency[u]) {
+        if (g < 0) continue;
+        touch(g);
+        relax(g, u, du + (cache[g] - pu).norm());
+      }
+    } else if (u < nf) {
       expand_face(u, -1);
     } else {
       int faces[2];
@@ -449,61 +465,99 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   };
   double length = solve(strip, apices);
 
-  for (int flips = 0; options_.straighten && flips < options_.max_flips; ++flips) {
-    // The unfrozen reflex vertex with the largest turn.
-    int best = -1;
-    double best_turn = 1e-9;
-    for (size_t j = 1; j + 1 < apices.size(); ++j) {
-      if (apices[j].vertex < 0 || std::find(frozen.begin(), frozen.end(), apices[j].vertex) != frozen.end()) continue;
-      const double turn = turn_at(apices, j);
-      if (turn > best_turn) best_turn = turn, best = static_cast<int>(j);
-    }
-    if (best < 0) break;
-    const int v = apices[best].vertex;
-    // The run of strip faces around v (its semi-star inside the strip).
-    int first = std::clamp(apices[best].portal, 0, static_cast<int>(strip.size()) - 1);
-    if (!contains_vertex(mesh_, strip[first], v)) {
-      frozen.push_back(v);
-      continue;
-    }
+  // A run of strip faces around a reflex vertex and the other semi-star that replaces it.
+  struct Flip {
+    int first, last, vertex;
+    double turn;
+    std::vector<int> other;
+  };
+  static thread_local std::vector<Flip> flips;
+  static thread_local std::vector<std::pair<double, size_t>> order;
+  // Builds the flip of apex j, or returns false (and freezes the vertex) when the path cannot be
+  // shortened there: the other side of v is open (a boundary) or spans at least π, i.e. the angle
+  // sum θ satisfies θ − (π + turn) ≥ π (the path through v is then locally shortest).
+  auto make_flip = [&](size_t j, Flip& flip) {
+    const int v = apices[j].vertex;
+    flip.vertex = v;
+    flip.turn = turn_at(apices, j);
+    int first = std::clamp(apices[j].portal, 0, static_cast<int>(strip.size()) - 1);
+    if (!contains_vertex(mesh_, strip[first], v)) return false;
     int last = first;
     while (first > 0 && contains_vertex(mesh_, strip[first - 1], v)) --first;
     while (last + 1 < static_cast<int>(strip.size()) && contains_vertex(mesh_, strip[last + 1], v)) ++last;
-    // Walk around v the other way, from strip[first] to strip[last].
     const int f0 = strip[first];
     const int k0 = corner_of(mesh_, f0, v);
-    const int forward = mesh_.adjacency[f0][(k0 + 2) % 3];
-    const bool run_forward = first < last && forward == strip[first + 1];
-    semi_star.clear();
-    bool closed = false;
-    int f = f0;
-    for (int steps = 0; steps < 4096; ++steps) {
+    const bool run_forward = first < last && mesh_.adjacency[f0][(k0 + 2) % 3] == strip[first + 1];
+    flip.first = first, flip.last = last;
+    flip.other.clear();
+    double angle_sum = corner_angle(f0, v);
+    for (int f = f0, steps = 0; steps < 4096; ++steps) {
       const int k = corner_of(mesh_, f, v);
       f = run_forward ? mesh_.adjacency[f][k] : mesh_.adjacency[f][(k + 2) % 3];
-      if (f < 0) break;
-      if (f == strip[last]) {
-        closed = true;
-        break;
+      if (f < 0) return false;
+      angle_sum += corner_angle(f, v);
+      if (f == strip[last]) break;
+      flip.other.push_back(f);
+    }
+    for (int i = first + 1; i < last; ++i) angle_sum += corner_angle(strip[i], v);
+    constexpr double kPi = 3.14159265358979323846;
+    return angle_sum - kPi - flip.turn < kPi - 1e-9;
+  };
+  auto apply = [&](const std::vector<Flip>& chosen, std::vector<int>& out) {
+    out.clear();
+    int at = 0;
+    for (const Flip& f : chosen) {  // in strip order
+      out.insert(out.end(), strip.begin() + at, strip.begin() + f.first + 1);
+      out.insert(out.end(), f.other.begin(), f.other.end());
+      at = f.last;
+    }
+    out.insert(out.end(), strip.begin() + at, strip.end());
+    remove_loops(out, parent_);
+  };
+
+  for (int pass = 0; options_.straighten && pass < options_.max_flips; ++pass) {
+    // Every removable reflex vertex, largest turn first, with runs that do not touch each other.
+    order.clear();
+    for (size_t j = 1; j + 1 < apices.size(); ++j) {
+      if (apices[j].vertex < 0 || std::find(frozen.begin(), frozen.end(), apices[j].vertex) != frozen.end()) continue;
+      const double turn = turn_at(apices, j);
+      if (turn > 1e-9) order.emplace_back(-turn, j);
+    }
+    if (order.empty()) break;
+    std::sort(order.begin(), order.end());
+    flips.clear();
+    for (const auto& [neg_turn, j] : order) {
+      Flip flip;
+      if (!make_flip(j, flip)) {
+        frozen.push_back(apices[j].vertex);
+        if (stats) ++stats->frozen;
+        continue;
       }
-      semi_star.push_back(f);
+      const bool overlaps = std::any_of(flips.begin(), flips.end(), [&](const Flip& f) {
+        return flip.first <= f.last + 1 && f.first <= flip.last + 1;
+      });
+      if (!overlaps) flips.push_back(std::move(flip));
     }
-    if (!closed) {  // the other side is open (a boundary): v stays
-      frozen.push_back(v);
-      continue;
+    if (flips.empty()) continue;  // all frozen this pass; the next pass finds nothing new
+    std::sort(flips.begin(), flips.end(), [](const Flip& x, const Flip& y) { return x.first < y.first; });
+    apply(flips, trial);
+    double trial_length = solve(trial, trial_apices);
+    if (!(trial_length < length - 1e-12 * mesh_.scale) && flips.size() > 1) {
+      // Together they did not shorten the path: fall back to the largest turn alone.
+      const auto best = std::max_element(flips.begin(), flips.end(), [](const Flip& x, const Flip& y) { return x.turn < y.turn; });
+      Flip single = *best;
+      flips.assign(1, single);
+      apply(flips, trial);
+      trial_length = solve(trial, trial_apices);
     }
-    trial.assign(strip.begin(), strip.begin() + first + 1);
-    trial.insert(trial.end(), semi_star.begin(), semi_star.end());
-    trial.insert(trial.end(), strip.begin() + last, strip.end());
-    remove_loops(trial, parent_);
-    const double trial_length = solve(trial, trial_apices);
     if (trial_length < length - 1e-12 * mesh_.scale) {
       strip.swap(trial);
       apices.swap(trial_apices);
       length = trial_length;
-      if (stats) ++stats->flips;
+      if (stats) stats->flips += static_cast<int>(flips.size());
     } else {
-      frozen.push_back(v);
-      if (stats) ++stats->frozen;
+      for (const Flip& f : flips) frozen.push_back(f.vertex);
+      if (stats) stats->frozen += static_cast<int>(flips.size());
     }
   }
   // Crossings of the final strip.
@@ -514,9 +568,17 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   point_in_face(mesh_, b, strip.back(), path.end);
 }
 
-bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats) {
+double GeodesicSolver::corner_angle(int face, int v) const {
+  const auto& t = mesh_.triangles[face];
+  const int k = corner_of(mesh_, face, v);
+  const Vec3 a = mesh_.positions[t[(k + 1) % 3]] - mesh_.positions[v], b = mesh_.positions[t[(k + 2) % 3]] - mesh_.positions[v];
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats,
+                                   SearchGraph graph) {
   static thread_local std::vector<int> strip;
-  if (!initial_strip(a, b, strip, stats)) {
+  if (!initial_strip(a, b, strip, stats, graph)) {
     path = GeodesicPath{a, b, {}, {}};
     return false;
   }

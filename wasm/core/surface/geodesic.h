@@ -44,6 +44,12 @@ struct DualGraph {
   int edge_of_node(int node) const;     // node >= faces
 };
 
+// Which graph phase (i) searches. kRefined (face and edge nodes, the queue drained under the A*
+// bound) finds the strip of the globally shortest path far more often; kDual (face nodes only,
+// stopping at the first arrival, as in the paper) is several times cheaper and is what curve
+// tracing uses, where most paths are short and start from nearby points.
+enum class SearchGraph { kRefined, kDual };
+
 struct ShortestPathOptions {
   bool straighten = true;          // phase (iii)
   int max_flips = 100000;          // safety bound on phase (iii)
@@ -72,10 +78,12 @@ class GeodesicSolver {
 
   // The locally shortest path from a to b (mesh space). Always succeeds on a connected mesh; when b
   // cannot be reached (another component) the path is empty (strip empty) and false is returned.
-  bool shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats = nullptr);
+  bool shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats = nullptr,
+                     SearchGraph graph = SearchGraph::kRefined);
 
   // Phase (i) alone (for tests and benchmarks): the face strip from a to b.
-  bool initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats = nullptr);
+  bool initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats = nullptr,
+                     SearchGraph graph = SearchGraph::kRefined);
   // Phases (ii)+(iii) on a given strip (consecutive faces adjacent; a on strip.front(), b on strip.back()).
   void straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
                   PathStats* stats = nullptr);
@@ -83,6 +91,7 @@ class GeodesicSolver {
  private:
   Vec3 node_position(int node) const;
   int link_face(int a, int b) const;  // a face holding both nodes
+  double corner_angle(int face, int v) const;
 
   const TriMesh& mesh_;
   ShortestPathOptions options_;

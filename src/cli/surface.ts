@@ -1,0 +1,201 @@
+/**
+ * `splinekit geodesic` and `splinekit trace`: shortest paths and Bézier curves on a mesh (b/Surf).
+ * Mesh points in the JSON inputs are vertex indices (integers) or {"face":f,"uv":[u,v]}, both in
+ * the file's order; outputs use the same convention.
+ */
+import { basename } from 'node:path';
+import { DEFAULT_MAX_MESH_BYTES, SplinekitError, SurfaceMesh, traceBezier, type MeshPoint, type MeshPointLike, type TraceOptions } from '../index.js';
+import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './splinekit.js';
+
+async function loadMesh(path: string): Promise<SurfaceMesh> {
+  return SurfaceMesh.load(readInput(path, DEFAULT_MAX_MESH_BYTES), basename(path));
+}
+
+/** A mesh point from JSON: a vertex index or {"face":f,"uv":[u,v]}; checked against the mesh. */
+function meshPoint(mesh: SurfaceMesh, value: unknown, where: string): MeshPoint {
+  try {
+    if (typeof value === 'number') return mesh.resolve(value as MeshPointLike, where);
+    const p = value as { face?: unknown; uv?: unknown };
+    if (p && typeof p.face === 'number' && Array.isArray(p.uv) && p.uv.length === 2 && p.uv.every((x) => typeof x === 'number'))
+      return mesh.resolve({ face: p.face, uv: [p.uv[0], p.uv[1]] }, where);
+  } catch (err) {
+    if (err instanceof SplinekitError) throw new SplinekitError('invalid-input', err.message.startsWith(where) ? err.message : `${where}: ${err.message}`);
+    throw err;
+  }
+  throw new SplinekitError('invalid-input', `${where}: expected a vertex index or {"face":f,"uv":[u,v]}`);
+}
+
+function round(x: number): number {
+  return Math.round(x * 1e3) / 1e3;
+}
+
+const geodesicUsage = `usage: splinekit geodesic <mesh> --pairs <pairs.json> [--json out.json]
+
+Locally shortest geodesic paths between pairs of mesh points (b/Surf §5.1). pairs.json:
+{"pairs":[[a,b],...]} where a point is a vertex index or {"face":f,"uv":[u,v]} (the point
+(1-u-v)·p0 + u·p1 + v·p2 of the face's vertices), indices in the file's order. --json writes
+{"paths":[{"length":L,"points":[[x,y,z],...]}],"stats":{"total_ms":..}}; total_ms covers the path
+computations only.`;
+
+export const geodesic: Command = {
+  summary: 'shortest paths between points on a mesh',
+  usage: geodesicUsage,
+  async run(args) {
+    const { values, positionals } = parse({ args, allowPositionals: true, options: { pairs: { type: 'string' }, json: { type: 'string' } } });
+    if (positionals.length !== 1) throw new UsageError(`expected one mesh file\n${geodesicUsage}`);
+    if (!values.pairs) throw new UsageError(`--pairs is required\n${geodesicUsage}`);
+    const json = readJSON(values.pairs, 'pairs') as { pairs?: unknown };
+    if (!json || !Array.isArray(json.pairs)) throw new SplinekitError('invalid-input', `${basename(values.pairs)}: expected {"pairs":[[a,b],...]}`);
+    const mesh = await loadMesh(positionals[0]);
+    try {
+      const pairs = json.pairs.map((pair: unknown, i: number) => {
+        if (!Array.isArray(pair) || pair.length !== 2) throw new SplinekitError('invalid-input', `${basename(values.pairs!)}: pair ${i} must be [a, b]`);
+        return [meshPoint(mesh, pair[0], `pair ${i} start`), meshPoint(mesh, pair[1], `pair ${i} end`)] as const;
+      });
+      let total = 0;
+      const paths = pairs.map(([a, b]) => {
+        const path = mesh.shortestPath(a, b);
+        total += mesh.handle.milliseconds();
+        const points: number[][] = [];
+        for (let i = 0; i < path.xyz.length; i += 3) points.push([path.xyz[i], path.xyz[i + 1], path.xyz[i + 2]]);
+        return { length: path.length, points };
+      });
+      if (values.json) writeJSON(values.json, { paths, stats: { total_ms: round(total) } });
+      else {
+        paths.forEach((p, i) => console.log(`pair ${i}: length ${p.length.toPrecision(8)}, ${p.points.length} points`));
+        console.log(`${paths.length} paths in ${round(total)} ms`);
+      }
+    } finally {
+      mesh.dispose();
+    }
+  },
+};
+
+const traceUsage = `usage: splinekit trace <mesh> (--curves <curves.json> | --random N [--seed S])
+       [--scheme olr|rdc] [--levels K | --adaptive DEG] [--json out.json]
+
+Traces cubic Bézier curves on the mesh by subdivision (b/Surf §3.5-§4): OLR (default, 5 levels)
+or RDC (4 levels), uniform or adaptive with an angle threshold in degrees. curves.json:
+{"curves":[[p0,p1,p2,p3],...]} with points as in \`splinekit geodesic\`; --random N draws N
+curves with control points uniform over the surface's area (seed S, default 1). --json writes
+{"curves":[{"points":[{"face":f,"uv":[u,v],"xyz":[x,y,z]},...]}],"stats":{"total_ms":..,
+"per_curve_ms":[...]}}: the whole polyline on the surface, every edge crossing included.`;
+
+/** mulberry32: a small seeded generator, so --random is reproducible. */
+function generator(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/** `count` points uniform over the mesh's area. */
+export function randomPoints(mesh: SurfaceMesh, count: number, seed: number): MeshPoint[] {
+  const random = generator(seed);
+  const t = mesh.triangles, x = mesh.positions, faces = t.length / 3;
+  const cumulative = new Float64Array(faces);
+  let total = 0;
+  for (let f = 0; f < faces; f++) {
+    const a = 3 * t[3 * f], b = 3 * t[3 * f + 1], c = 3 * t[3 * f + 2];
+    const e1 = [x[b] - x[a], x[b + 1] - x[a + 1], x[b + 2] - x[a + 2]];
+    const e2 = [x[c] - x[a], x[c + 1] - x[a + 1], x[c + 2] - x[a + 2]];
+    total += Math.hypot(e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]) / 2;
+    cumulative[f] = total;
+  }
+  const out: MeshPoint[] = [];
+  for (let i = 0; i < count; i++) {
+    const r = random() * total;
+    let lo = 0, hi = faces - 1;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (cumulative[mid] < r) lo = mid + 1;
+      else hi = mid;
+    }
+    let u = random(), v = random();
+    if (u + v > 1) (u = 1 - u), (v = 1 - v);
+    out.push({ face: lo, uv: [u, v] });
+  }
+  return out;
+}
+
+function integerOption(value: string | undefined, name: string, min: number, max: number): number | undefined {
+  if (value === undefined) return undefined;
+  const n = Number(value);
+  if (!Number.isInteger(n) || n < min || n > max) throw new UsageError(`--${name} must be an integer from ${min} to ${max} (got "${value}")`);
+  return n;
+}
+
+export const trace: Command = {
+  summary: 'Bézier curves on a mesh by geodesic subdivision',
+  usage: traceUsage,
+  async run(args) {
+    const { values, positionals } = parse({
+      args,
+      allowPositionals: true,
+      options: {
+        curves: { type: 'string' },
+        random: { type: 'string' },
+        seed: { type: 'string' },
+        scheme: { type: 'string' },
+        levels: { type: 'string' },
+        adaptive: { type: 'string' },
+        json: { type: 'string' },
+      },
+    });
+    if (positionals.length !== 1) throw new UsageError(`expected one mesh file\n${traceUsage}`);
+    if (!values.curves === (values.random === undefined)) throw new UsageError(`give either --curves or --random\n${traceUsage}`);
+    if (values.levels !== undefined && values.adaptive !== undefined) throw new UsageError('--levels and --adaptive exclude each other');
+    const scheme = values.scheme ?? 'olr';
+    if (scheme !== 'olr' && scheme !== 'rdc') throw new UsageError(`--scheme must be olr or rdc (got "${scheme}")`);
+    const options: TraceOptions = { scheme, levels: integerOption(values.levels, 'levels', 0, 12) };
+    if (values.adaptive !== undefined) {
+      const deg = Number(values.adaptive);
+      if (!(deg > 0 && deg < 180)) throw new UsageError(`--adaptive must be an angle in degrees between 0 and 180 (got "${values.adaptive}")`);
+      options.adaptive = deg;
+    }
+    const count = integerOption(values.random, 'random', 1, 1_000_000);
+    const seed = integerOption(values.seed, 'seed', 0, 2 ** 32 - 1) ?? 1;
+    let curvesJSON: unknown[] | undefined;
+    if (values.curves) {
+      const json = readJSON(values.curves, 'curves') as { curves?: unknown };
+      if (!json || !Array.isArray(json.curves)) throw new SplinekitError('invalid-input', `${basename(values.curves)}: expected {"curves":[[p0,p1,p2,p3],...]}`);
+      curvesJSON = json.curves;
+    }
+    const mesh = await loadMesh(positionals[0]);
+    try {
+      let polygons: MeshPoint[][];
+      if (curvesJSON) {
+        polygons = curvesJSON.map((c: unknown, i: number) => {
+          if (!Array.isArray(c) || c.length !== 4) throw new SplinekitError('invalid-input', `${basename(values.curves!)}: curve ${i} must have 4 control points`);
+          return c.map((p, k) => meshPoint(mesh, p, `curve ${i} point ${k}`));
+        });
+      } else {
+        const points = randomPoints(mesh, 4 * count!, seed);
+        polygons = Array.from({ length: count! }, (_, i) => points.slice(4 * i, 4 * i + 4));
+      }
+      const perCurve: number[] = [];
+      const curves = polygons.map((polygon) => {
+        const traced = traceBezier(mesh, polygon, options);
+        perCurve.push(traced.ms);
+        return {
+          points: traced.points.map((p, i) => ({ face: p.face, uv: p.uv, xyz: [traced.xyz[3 * i], traced.xyz[3 * i + 1], traced.xyz[3 * i + 2]] })),
+        };
+      });
+      const total = perCurve.reduce((a, b) => a + b, 0);
+      if (values.json) writeJSON(values.json, { curves, stats: { total_ms: round(total), per_curve_ms: perCurve.map(round) } });
+      else {
+        const sorted = [...perCurve].sort((a, b) => a - b);
+        console.log(
+          `${basename(positionals[0])}: ${curves.length} curves (${scheme}, ${options.adaptive ? `adaptive ${options.adaptive}°` : `${options.levels ?? (scheme === 'olr' ? 5 : 4)} levels`}), ` +
+            `${curves.reduce((n, c) => n + c.points.length, 0)} points, ${round(total)} ms (median ${round(sorted[sorted.length >> 1])} ms per curve)`,
+        );
+      }
+    } finally {
+      mesh.dispose();
+    }
+  },
+};
