@@ -176,11 +176,11 @@ bool CurveTracer::polygon_flat(const MeshPoint* points, int count, double angle)
 void CurveTracer::olr_adaptive(const std::array<MeshPoint, 4>& points, int level, int interval,
                                const TraceOptions& options, std::vector<MeshPoint>& out) {
   if (level >= options.max_levels || (level > 0 && polygon_flat(points.data(), 4, options.angle))) {
-    if (out.empty()) {
-      out.insert(out.end(), points.begin(), points.end());
-    } else {
-      out.push_back(points[3]);
-    }
+    // A leaf adds its Bézier polygon (blossoms at its knots), so that neighbouring leaves of
+    // different levels meet at a point of the curve with collinear handles. (§4.2.1 adds the
+    // rightmost B-spline control point; across a change of level that point doubles back.)
+    const ControlPolygon bezier = olr_bezier(points, level, interval);
+    out.insert(out.end(), bezier.begin() + (out.empty() ? 0 : 1), bezier.end());
     return;
   }
   // The five points of the two children (new indices 2m .. 2m+4).
@@ -326,20 +326,28 @@ void CurveTracer::split_leaf(const ControlPolygon& polygon, const ControlPolygon
   const MeshPoint q0 = average(leaf[0], leaf[1], s), q1 = average(leaf[1], leaf[2], s), q2 = average(leaf[2], leaf[3], s);
   const MeshPoint r0 = average(q0, q1, s), r1 = average(q1, q2, s);
   const MeshPoint pt = average(r0, r1, s);
-  // Extends the geodesic from pt through x to `scale` times its length.
-  auto extend = [&](const MeshPoint& x, double scale) {
+  // Shoots from pt along the geodesic towards x (or away from it: sign -1) for `scale` times its length.
+  auto shoot = [&](const MeshPoint& x, double sign, double scale, MeshPoint& out) {
     const GeodesicPath g = path(pt, x);
-    const Tangent dir = start_tangent(mesh, g);
+    Tangent dir = start_tangent(mesh, g);
     const double len = path_length(mesh, g) * scale;
-    if (dir.dir.norm() == 0 || !(len > 0)) return x;
-    StraightestGeodesic out;
-    straightest_geodesic(mesh, pt, dir, len, out);
-    return out.end;
+    if (dir.dir.norm() == 0 || !(len > 0)) return false;
+    dir.dir *= sign;
+    StraightestGeodesic traced;
+    straightest_geodesic(mesh, pt, dir, len, traced);
+    out = traced.end;
+    return true;
   };
-  const double left_scale = t > t0 ? t / (t - t0) : 1;
-  const double right_scale = t1 > t ? (1 - t) / (t1 - t) : 1;
-  left = {polygon[0], average(polygon[0], polygon[1], t), extend(r0, left_scale), pt};
-  right = {pt, extend(r1, right_scale), average(polygon[2], polygon[3], t), polygon[3]};
+  // The handles at pt: P̄2 extends pt->r0 to t/(t-t0) of its length, P̄'1 extends pt->r1 to
+  // (1-t)/(t1-t). When t sits on a leaf's end one of r0, r1 coincides with pt: that handle then
+  // goes opposite the other one, as collinear handles do.
+  MeshPoint before = pt, after = pt;
+  const bool has_before = t > t0 && shoot(r0, 1, t / (t - t0), before);
+  const bool has_after = t1 > t && shoot(r1, 1, (1 - t) / (t1 - t), after);
+  if (!has_after && t > t0) shoot(r0, -1, (1 - t) / (t - t0), after);
+  if (!has_before && t1 > t) shoot(r1, -1, t / (t1 - t), before);
+  left = {polygon[0], average(polygon[0], polygon[1], t), before, pt};
+  right = {pt, after, average(polygon[2], polygon[3], t), polygon[3]};
 }
 
 void CurveTracer::split(const ControlPolygon& polygon, double t, const TraceOptions& options, ControlPolygon& left,
