@@ -1,11 +1,12 @@
 import type { SvgDocument } from '../../src/index.js';
 import { DocumentMode } from '../modes/document-mode.js';
 import { SkinMode } from '../modes/skin/skin-mode.js';
+import { SurfaceMode, isMeshFile } from '../modes/surface/surface-mode.js';
 import { ControlOverlay } from '../overlay/overlay.js';
 import { h } from '../ui/dom.js';
 import { SidePanel } from '../ui/panel.js';
 import { StatusBar } from '../ui/statusbar.js';
-import { Toolbar, type Sample } from '../ui/toolbar.js';
+import { MOD, Toolbar, type Sample } from '../ui/toolbar.js';
 import { View2D, type ViewPointer } from '../view2d/view2d.js';
 import { loadSession, saveSession, type SavedSession } from './autosave.js';
 import { OpenDocumentCommand } from './commands.js';
@@ -34,7 +35,10 @@ export class Editor {
   readonly status: StatusBar;
   readonly panel = new SidePanel();
   readonly skin = new SkinMode();
+  readonly surface = new SurfaceMode();
   samples: Sample[] = [];
+  /** What the drop hint says (Surface mode opens meshes). */
+  private readonly dropText = h('div', {}, 'Drop an SVG file to open it');
   /** The strip under the view that modes fill (the skin timeline). */
   private readonly dock: HTMLElement;
 
@@ -46,14 +50,14 @@ export class Editor {
       exportSVG: () => this.exportSVG(),
       undo: () => this.undo(),
       redo: () => this.redo(),
-      fit: () => this.view.fit(),
-      zoom: (f) => this.view.zoom(f),
+      fit: () => this.fit(),
+      zoom: (f) => this.zoom(f),
       toggleOverlay: () => this.state.setOverlay(!this.state.overlay),
     });
     this.status = new StatusBar(() => this.state.setError(null));
     const stage = h('main', { class: 'stage' });
     this.dock = h('div', { class: 'dock' });
-    const dropHint = h('div', { class: 'drop-hint', 'aria-hidden': 'true' }, h('div', {}, 'Drop an SVG file to open it'));
+    const dropHint = h('div', { class: 'drop-hint', 'aria-hidden': 'true' }, this.dropText);
     root.append(this.toolbar.el, h('div', { class: 'workspace' }, h('div', { class: 'stage-column' }, stage, this.dock), this.panel.el), this.status.el, dropHint);
 
     this.view = new View2D(stage);
@@ -62,6 +66,8 @@ export class Editor {
     this.modes = new ModeRegistry(context);
     this.modes.register(new DocumentMode());
     this.modes.register(this.skin);
+    this.modes.register(this.surface);
+    this.status.el.prepend(this.surface.statusEl);
 
     this.wire();
     this.listenKeys();
@@ -94,6 +100,11 @@ export class Editor {
   }
 
   async openFile(file: File): Promise<boolean> {
+    // Meshes go to Surface mode; there, an SVG is a drawing to place on the mesh.
+    if (isMeshFile(file.name) || this.modes.active === this.surface) {
+      if (this.modes.active !== this.surface) this.modes.activate(this.surface.id);
+      return this.surface.openFile(file);
+    }
     let bytes: Uint8Array;
     try {
       bytes = await readFile(file);
@@ -122,6 +133,17 @@ export class Editor {
     this.samples = list.samples;
     this.toolbar.setSamples(this.samples);
     return this.samples;
+  }
+
+  /** Fits the active view (the 3D view in Surface mode). */
+  fit(): void {
+    if (this.modes.active === this.surface) this.surface.fit();
+    else this.view.fit();
+  }
+
+  zoom(factor: number): void {
+    if (this.modes.active === this.surface) this.surface.zoom(factor);
+    else this.view.zoom(factor);
   }
 
   undo(): void {
@@ -211,6 +233,10 @@ export class Editor {
       toolbar.setModes(this.modes.list, mode);
       this.panel.setHeading(mode.title, mode.description);
       this.panel.setModeKeys(mode.keys ?? []);
+      const surface = mode === this.surface;
+      toolbar.fileInput.accept = surface ? SurfaceMode.accept : '.svg,image/svg+xml';
+      this.dropText.textContent = surface ? 'Drop a mesh to open it, or an SVG to place on the mesh' : 'Drop an SVG file to open it';
+      toolbar.setOpenTitle(surface ? 'Open a mesh (OBJ, OFF, PLY, STL, glTF, GLB), or an SVG to place on it — or drop one on the window' : `Open an SVG file (${MOD}O), or drop one on the window`);
       this.autosaveSession();
     });
 
@@ -235,12 +261,15 @@ export class Editor {
       if (mod && key === 'z' && !e.shiftKey) this.undo();
       else if (mod && ((key === 'z' && e.shiftKey) || key === 'y')) this.redo();
       else if (mod && key === 'o') this.toolbar.fileInput.click();
-      else if (mod && key === 's') this.exportSVG();
+      else if (mod && key === 's') {
+        if (this.modes.active === this.surface) this.surface.saveDrawingFile();
+        else this.exportSVG();
+      }
       else if (mod || e.altKey || target instanceof HTMLSelectElement) handled = false;
-      else if (key === 'f') this.view.fit();
+      else if (key === 'f') this.fit();
       else if (key === 'h') this.state.setOverlay(!this.state.overlay);
-      else if (key === '+' || key === '=') this.view.zoom(1.5);
-      else if (key === '-' || key === '_') this.view.zoom(1 / 1.5);
+      else if (key === '+' || key === '=') this.zoom(1.5);
+      else if (key === '-' || key === '_') this.zoom(1 / 1.5);
       else if (key === '1') this.view.actualSize();
       else handled = this.modes.active?.keyDown?.(e) ?? false;
       if (handled) e.preventDefault();

@@ -1,5 +1,6 @@
-import { anchorJunction, type ContinuityKind } from '../../src/index.js';
+import { anchorJunction, type ContinuityKind, type MeshPoint } from '../../src/index.js';
 import type { SkinTestState } from '../modes/skin/skin-mode.js';
+import type { SurfaceTestState } from '../modes/surface/surface-mode.js';
 import type { Editor } from './editor.js';
 
 /** A read-only window into the editor for end-to-end tests (window.splinekitEditor). */
@@ -32,6 +33,22 @@ export interface EditorTestHook {
   skinHandleOnScreen(index: number): { x: number; y: number } | null;
   /** The skin gizmo of the selected handle (client pixels), or null. */
   skinGizmoOnScreen(): { center: { x: number; y: number }; knob: { x: number; y: number }; ring: number } | null;
+  /** Surface mode. */
+  surface: SurfaceTestHook;
+}
+
+/** Surface mode's window for tests (window.splinekitEditor.surface). */
+export interface SurfaceTestHook {
+  /** Resolves when a mesh is shown and no load, edit or trace is under way. */
+  ready(): Promise<void>;
+  /** Mesh info, splines (JSON and traced polylines), selection, tool, last trace time. */
+  state(): SurfaceTestState;
+  /** Where a mesh point is on screen (client pixels), and whether the camera sees it. */
+  project(p: MeshPoint): { x: number; y: number; visible: boolean } | null;
+  /** The mesh point under a client point, or null (off the mesh). */
+  meshPointAt(x: number, y: number): MeshPoint | null;
+  /** Vertex positions of the given faces, 9 numbers per face (x y z of its 3 vertices). */
+  faceVertices(faces: number[]): number[];
 }
 
 declare global {
@@ -93,7 +110,25 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
       const g = editor.skin.gizmoOnCanvas();
       return g ? { center: client(...g.center), knob: client(...g.knob), ring: g.ring } : null;
     },
+    surface: Object.freeze({
+      ready: () => editor.surface.ready(),
+      state: () => editor.surface.testState(),
+      project(p: MeshPoint) {
+        const at = editor.surface.projectOnCanvas(p);
+        return at ? { ...surfaceClient(at.x, at.y), visible: at.visible } : null;
+      },
+      meshPointAt(x: number, y: number) {
+        const r = editor.surface.canvas?.getBoundingClientRect();
+        return r ? editor.surface.meshPointOnCanvas(x - r.left, y - r.top) : null;
+      },
+      faceVertices: (faces: number[]) => editor.surface.faceVertices(faces),
+    }),
   };
+  /** 3D canvas pixels → client pixels. */
+  function surfaceClient(sx: number, sy: number): { x: number; y: number } {
+    const r = editor.surface.canvas?.getBoundingClientRect();
+    return { x: (r?.left ?? 0) + sx, y: (r?.top ?? 0) + sy };
+  }
   /** Canvas pixels → client pixels. */
   function client(sx: number, sy: number): { x: number; y: number } {
     const r = editor.view.canvas.getBoundingClientRect();

@@ -45,7 +45,8 @@ export class Toolbar {
       if (file) actions.openFile(file);
     });
     const button = (label: string, iconPath: string, title: string, onclick: () => void, extra: Record<string, string> = {}) => {
-      const b = h('button', { type: 'button', class: 'tool', title, 'aria-label': label, ...extra }, icon(iconPath), h('span', { class: 'label' }, label));
+      const action = label.toLowerCase().replace(/\s+/g, '-');
+      const b = h('button', { type: 'button', class: 'tool', title, 'aria-label': label, 'data-action': action, ...extra }, icon(iconPath), h('span', { class: 'label' }, label));
       b.addEventListener('click', onclick);
       return noFocusOnClick(b);
     };
@@ -120,6 +121,11 @@ export class Toolbar {
     this.redoButton.disabled = !history.canRedo;
     this.undoButton.title = history.undoLabel ? `Undo ${history.undoLabel} (${MOD}Z)` : `Undo (${MOD}Z)`;
     this.redoButton.title = history.redoLabel ? `Redo ${history.redoLabel} (${MOD}Shift+Z)` : `Redo (${MOD}Shift+Z)`;
+  }
+
+  /** The Open button's tooltip (the active mode may open other files, e.g. meshes). */
+  setOpenTitle(title: string): void {
+    this.el.querySelector('[data-action="open"]')?.setAttribute('title', title);
   }
 
   setHasDocument(has: boolean): void {

@@ -17,6 +17,13 @@ export interface RayHit {
 
 const LEAF_SIZE = 8;
 
+/** A built hierarchy as flat arrays (what a worker hands over). */
+export interface BVHArrays {
+  bounds: Float32Array;
+  nodes: Int32Array;
+  order: Uint32Array;
+}
+
 export class TriangleBVH {
   /** Per node: min xyz, max xyz. */
   private readonly bounds: Float32Array;
@@ -26,10 +33,19 @@ export class TriangleBVH {
   private readonly order: Uint32Array;
   private nodeCount = 0;
 
+  /** Builds the hierarchy, or adopts one built elsewhere (`built`, for the same mesh). */
   constructor(
     private readonly positions: ArrayLike<number>,
     private readonly triangles: ArrayLike<number>,
+    built?: BVHArrays,
   ) {
+    if (built) {
+      this.bounds = built.bounds;
+      this.nodes = built.nodes;
+      this.order = built.order;
+      this.nodeCount = built.nodes.length / 3;
+      return;
+    }
     const n = triangles.length / 3;
     this.order = new Uint32Array(n);
     const centroids = new Float32Array(3 * n);
@@ -72,21 +88,36 @@ export class TriangleBVH {
         cmax1 = Math.max(cmax1, centroids[f + 1]);
         cmax2 = Math.max(cmax2, centroids[f + 2]);
       }
-      this.bounds.set([bmin0, bmin1, bmin2, bmax0, bmax1, bmax2], b);
+      const B = this.bounds;
+      B[b] = bmin0;
+      B[b + 1] = bmin1;
+      B[b + 2] = bmin2;
+      B[b + 3] = bmax0;
+      B[b + 4] = bmax1;
+      B[b + 5] = bmax2;
       const ex = [cmax0 - cmin0, cmax1 - cmin1, cmax2 - cmin2];
       const axis = ex[0] >= ex[1] && ex[0] >= ex[2] ? 0 : ex[1] >= ex[2] ? 1 : 2;
       if (count <= LEAF_SIZE || ex[axis] <= 0) {
-        this.nodes.set([-1, first, count], 3 * node);
+        this.nodes[3 * node] = -1;
+        this.nodes[3 * node + 1] = first;
+        this.nodes[3 * node + 2] = count;
         continue;
       }
       // Median split (nth element by centroid along the axis).
       const mid = first + (count >> 1);
       this.select(centroids, axis, first, first + count - 1, mid);
       const left = this.alloc(), right = this.alloc();
-      this.nodes.set([left, first, count], 3 * node);
+      this.nodes[3 * node] = left;
+      this.nodes[3 * node + 1] = first;
+      this.nodes[3 * node + 2] = count;
       if (right !== left + 1) throw new Error('bvh: node allocation out of order');
       stack.push([left, first, mid - first], [right, mid, first + count - mid]);
     }
+  }
+
+  /** The arrays of the hierarchy (trimmed to the nodes in use). */
+  toArrays(): BVHArrays {
+    return { bounds: this.bounds.slice(0, 6 * this.nodeCount), nodes: this.nodes.slice(0, 3 * this.nodeCount), order: this.order };
   }
 
   /** The nearest triangle hit by the ray origin + t·dir (t ≥ 0), or null. */
@@ -150,13 +181,12 @@ export class TriangleBVH {
   /** Quickselect: puts the k-th smallest (by centroid on `axis`) at k, smaller before, larger after. */
   private select(centroids: Float32Array, axis: number, lo: number, hi: number, k: number): void {
     const o = this.order;
-    const key = (i: number) => centroids[3 * o[i] + axis];
     while (hi > lo) {
-      const pivot = key((lo + hi) >> 1);
+      const pivot = centroids[3 * o[(lo + hi) >> 1] + axis];
       let i = lo, j = hi;
       while (i <= j) {
-        while (key(i) < pivot) i++;
-        while (key(j) > pivot) j--;
+        while (centroids[3 * o[i] + axis] < pivot) i++;
+        while (centroids[3 * o[j] + axis] > pivot) j--;
         if (i <= j) {
           const t = o[i];
           o[i] = o[j];

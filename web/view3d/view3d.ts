@@ -18,7 +18,7 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { Emitter } from '../app/events.js';
-import { TriangleBVH, type RayHit } from './bvh.js';
+import { TriangleBVH, type BVHArrays, type RayHit } from './bvh.js';
 
 /** A pointer on the 3D view: canvas CSS pixels plus the modifier keys. */
 export interface Pointer3D {
@@ -166,15 +166,17 @@ export class View3D {
   }
 
   /**
-   * Shows a mesh (positions xyz, triangles in file order); returns its smooth normals. `fit`
-   * moves the camera to frame it.
+   * Shows a mesh (positions xyz, triangles in file order). Smooth normals and the picking
+   * hierarchy are computed unless given (a worker can make them). `fit` frames the mesh.
    */
-  setMesh(positions: Float32Array, triangles: Uint32Array, fit = true): ShownMesh {
+  setMesh(positions: Float32Array, triangles: Uint32Array, options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays } = {}): ShownMesh {
+    const fit = options.fit ?? true;
     this.clearMesh();
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(positions, 3));
     geometry.setIndex(new BufferAttribute(triangles, 1));
-    geometry.computeVertexNormals();
+    if (options.normals && options.normals.length === positions.length) geometry.setAttribute('normal', new BufferAttribute(options.normals, 3));
+    else geometry.computeVertexNormals();
     geometry.computeBoundingSphere();
     geometry.computeBoundingBox();
     const bb = geometry.boundingBox!;
@@ -182,7 +184,7 @@ export class View3D {
     this.meshObject = new Mesh(geometry, this.material);
     this.meshObject.name = 'surface-mesh';
     this.scene.add(this.meshObject);
-    this.bvh = new TriangleBVH(positions, triangles);
+    this.bvh = new TriangleBVH(positions, triangles, options.bvh);
     this.shown = {
       positions,
       triangles,

@@ -1,0 +1,310 @@
+import { mkdirSync, readFileSync, statSync } from 'node:fs';
+import type { Page } from '@playwright/test';
+import { expect, test } from './fixtures.js';
+import { frames, openEditor, publicFile } from './helpers.js';
+
+/**
+ * Surface mode end to end: a sample mesh opens in the 3D view; four clicks on it draw a spline
+ * whose traced polyline lies on the mesh (every point on its face, every piece inside one face);
+ * dragging an anchor retraces it, undo and redo bring back the exact polylines; moving and
+ * turning the spline, the tracing options, an SVG placed on the mesh, a bad mesh file and the
+ * autosave after a reload.
+ */
+
+type SurfaceState = ReturnType<NonNullable<Window['splinekitEditor']>['surface']['state']>;
+type Spline = SurfaceState['splines'][number];
+type XY = { x: number; y: number };
+
+function surface(page: Page): Promise<SurfaceState> {
+  return page.evaluate(() => window.splinekitEditor!.surface.state());
+}
+
+/** Waits until the mesh is shown and no load, edit or trace is under way. */
+async function settled(page: Page): Promise<SurfaceState> {
+  await page.evaluate(() => window.splinekitEditor!.surface.ready());
+  await frames(page);
+  return surface(page);
+}
+
+async function openSurface(page: Page): Promise<SurfaceState> {
+  await openEditor(page);
+  await page.getByRole('button', { name: 'Surface', exact: true }).click();
+  const s = await settled(page);
+  expect(s.active).toBe(true);
+  return s;
+}
+
+/** Client position of a point given as fractions of the 3D canvas. */
+async function canvasAt(page: Page, fx: number, fy: number): Promise<XY> {
+  const box = (await page.getByTestId('view3d').boundingBox())!;
+  return { x: box.x + fx * box.width, y: box.y + fy * box.height };
+}
+
+async function projected(page: Page, p: { face: number; uv: [number, number] }): Promise<XY & { visible: boolean }> {
+  const at = await page.evaluate((q) => window.splinekitEditor!.surface.project(q), p);
+  expect(at, 'the mesh point projects on the canvas').not.toBeNull();
+  return at!;
+}
+
+/** Presses at `from`, moves in `steps` to `to` (as a user drags), releases. */
+async function drag(page: Page, from: XY, to: XY, steps = 10): Promise<void> {
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let i = 1; i <= steps; i++) {
+    await page.mouse.move(from.x + ((to.x - from.x) * i) / steps, from.y + ((to.y - from.y) * i) / steps);
+    await page.waitForTimeout(16);
+  }
+  await page.mouse.up();
+}
+
+/** Clicks the points on the mesh (each must be on it), then Enter. */
+async function drawSpline(page: Page, spots: [number, number][]): Promise<SurfaceState> {
+  for (const [fx, fy] of spots) {
+    const p = await canvasAt(page, fx, fy);
+    expect(await page.evaluate(({ x, y }) => window.splinekitEditor!.surface.meshPointAt(x, y), p), `(${fx}, ${fy}) is on the mesh`).not.toBeNull();
+    await page.mouse.click(p.x, p.y);
+    await page.waitForTimeout(120); // not a double click
+  }
+  await page.keyboard.press('Enter');
+  return settled(page);
+}
+
+/**
+ * Checks that a traced polyline lies on the mesh: each point is the barycentric combination of
+ * its mesh point's face, and each piece between two points stays in one face (the next point lies
+ * on the face of the previous one, or the other way round) — so no piece cuts through the volume.
+ */
+async function expectOnMesh(page: Page, spline: Spline, scale: number): Promise<void> {
+  const { polyline: X, where: W } = spline;
+  const n = X.length / 3;
+  expect(n, 'polyline points').toBeGreaterThan(8);
+  expect(W.length).toBe(3 * n);
+  const faces = [...new Set(Array.from({ length: n }, (_, i) => W[3 * i]))];
+  const V = await page.evaluate((f) => window.splinekitEditor!.surface.faceVertices(f), faces);
+  const corners = new Map<number, number[][]>();
+  faces.forEach((f, k) => corners.set(f, [0, 1, 2].map((c) => V.slice(9 * k + 3 * c, 9 * k + 3 * c + 3))));
+  const tol = 1e-5 * scale;
+  const at = (i: number) => [X[3 * i], X[3 * i + 1], X[3 * i + 2]];
+  let worst = 0;
+  for (let i = 0; i < n; i++) {
+    const [a, b, c] = corners.get(W[3 * i])!, u = W[3 * i + 1], v = W[3 * i + 2], w = 1 - u - v;
+    expect(u, `u of point ${i}`).toBeGreaterThanOrEqual(-1e-6);
+    expect(v, `v of point ${i}`).toBeGreaterThanOrEqual(-1e-6);
+    expect(w, `1-u-v of point ${i}`).toBeGreaterThanOrEqual(-1e-6);
+    const p = at(i);
+    worst = Math.max(worst, Math.hypot(...[0, 1, 2].map((k) => w * a[k] + u * b[k] + v * c[k] - p[k])));
+  }
+  expect(worst, 'largest distance from a polyline point to its mesh point').toBeLessThan(tol);
+  /** Whether q lies on the closed triangle (a, b, c), within tol. */
+  const onFace = (q: number[], [a, b, c]: number[][]) => {
+    const e1 = [0, 1, 2].map((k) => b[k] - a[k]), e2 = [0, 1, 2].map((k) => c[k] - a[k]), d = [0, 1, 2].map((k) => q[k] - a[k]);
+    const dot = (x: number[], y: number[]) => x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+    const a11 = dot(e1, e1), a12 = dot(e1, e2), a22 = dot(e2, e2), b1 = dot(d, e1), b2 = dot(d, e2);
+    const det = a11 * a22 - a12 * a12;
+    const s = (a22 * b1 - a12 * b2) / det, t = (a11 * b2 - a12 * b1) / det;
+    const off = Math.hypot(...[0, 1, 2].map((k) => a[k] + s * e1[k] + t * e2[k] - q[k]));
+    const slack = 1e-6;
+    return off < tol && s >= -slack && t >= -slack && s + t <= 1 + slack;
+  };
+  let cuts = 0;
+  for (let i = 0; i + 1 < n; i++) {
+    const fi = W[3 * i], fj = W[3 * i + 3];
+    if (fi === fj) continue;
+    if (!onFace(at(i + 1), corners.get(fi)!) && !onFace(at(i), corners.get(fj)!)) cuts++;
+  }
+  expect(cuts, 'polyline pieces that leave the faces of their ends').toBe(0);
+}
+
+/** Largest distance from a point of polyline A to the nearest point of polyline B. */
+function hausdorff(A: number[], B: number[]): number {
+  let worst = 0;
+  for (let i = 0; i < A.length; i += 3) {
+    let best = Infinity;
+    for (let j = 0; j < B.length; j += 3) best = Math.min(best, Math.hypot(A[i] - B[j], A[i + 1] - B[j + 1], A[i + 2] - B[j + 2]));
+    worst = Math.max(worst, best);
+  }
+  return worst;
+}
+
+/** Where the clicks go, as fractions of the 3D view (all on the pebble as it is framed). */
+const SPOTS: [number, number][] = [
+  [0.22, 0.56],
+  [0.38, 0.36],
+  [0.57, 0.6],
+  [0.76, 0.42],
+];
+
+test('Surface mode: draw a spline on a mesh, drag an anchor, undo and redo', async ({ page }) => {
+  let s = await openSurface(page);
+  expect(s.file).toBe('pebble.ply');
+  expect(s.meshInfo?.faces).toBe(20480);
+  expect(s.splines).toHaveLength(0);
+  await expect(page.getByTestId('surface-status-mesh')).toContainText('20,480 triangles');
+  await expect(page.getByTestId('mode-keys')).toContainText('Alt+click a curve');
+
+  s = await drawSpline(page, SPOTS);
+  expect(s.splines).toHaveLength(1);
+  expect(s.drawingId).toBeNull();
+  const drawn = s.splines[0];
+  expect(drawn.json.points).toHaveLength(3 * (SPOTS.length - 1) + 1);
+  expect(drawn.segmentStarts).toHaveLength(SPOTS.length - 1);
+  const scale = s.scale!;
+  await expectOnMesh(page, drawn, scale);
+  // The anchors are where the clicks were.
+  for (let k = 0; k < SPOTS.length; k++) {
+    const at = await projected(page, drawn.json.points[3 * k]);
+    const want = await canvasAt(page, ...SPOTS[k]);
+    expect(Math.hypot(at.x - want.x, at.y - want.y), `anchor ${k} under its click`).toBeLessThan(1.5);
+  }
+  expect(s.lastTraceMs).not.toBeNull();
+  await expect(page.getByTestId('surface-status-trace')).toContainText('ms');
+
+  // Drag the second anchor down and right: the curve is traced again, still on the mesh.
+  const from = await projected(page, drawn.json.points[3]);
+  expect(from.visible).toBe(true);
+  await drag(page, from, { x: from.x + 50, y: from.y + 60 });
+  s = await settled(page);
+  const moved = s.splines[0];
+  expect(moved.json.points[3]).not.toEqual(drawn.json.points[3]);
+  const at = await projected(page, moved.json.points[3]);
+  expect(Math.hypot(at.x - (from.x + 50), at.y - (from.y + 60)), 'the anchor followed the pointer').toBeLessThan(2);
+  expect(hausdorff(moved.polyline, drawn.polyline), 'the curve moved').toBeGreaterThan(0.01 * scale);
+  await expectOnMesh(page, moved, scale);
+
+  // Undo brings back the curve exactly; redo the dragged one.
+  await page.keyboard.press('Control+z');
+  s = await settled(page);
+  expect(s.splines[0].json).toEqual(drawn.json);
+  expect(s.splines[0].polyline).toEqual(drawn.polyline);
+  await page.keyboard.press('Control+Shift+z');
+  s = await settled(page);
+  expect(s.splines[0].json).toEqual(moved.json);
+  expect(s.splines[0].polyline).toEqual(moved.polyline);
+
+  await page.getByTestId('view3d').focus();
+  mkdirSync('docs', { recursive: true });
+  await page.screenshot({ path: 'docs/surface.png' });
+  expect(statSync('docs/surface.png').size).toBeLessThan(300_000);
+});
+
+test('Surface mode: move and turn a spline, switch RDC/OLR and adaptive, insert and delete points', async ({ page }) => {
+  await openSurface(page);
+  let s = await drawSpline(page, SPOTS.slice(0, 3));
+  const scale = s.scale!;
+  const first = s.splines[0];
+  // Click the curve to select it, then G + drag moves it along the surface.
+  const m = Math.floor(first.polyline.length / 3 * 0.3); // away from the anchors
+  const onCurve = await projected(page, { face: first.where[3 * m], uv: [first.where[3 * m + 1], first.where[3 * m + 2]] });
+  await page.keyboard.press('Escape'); // deselect
+  await page.mouse.click(onCurve.x, onCurve.y);
+  s = await settled(page);
+  expect(s.selection).toEqual({ spline: first.id, point: null });
+  await page.keyboard.press('g');
+  expect((await surface(page)).tool).toBe('move');
+  await drag(page, onCurve, { x: onCurve.x + 40, y: onCurve.y - 30 });
+  s = await settled(page);
+  const movedSpline = s.splines[0];
+  expect(hausdorff(movedSpline.polyline, first.polyline)).toBeGreaterThan(0.01 * scale);
+  await expectOnMesh(page, movedSpline, scale);
+  expect(movedSpline.json.points).toHaveLength(first.json.points.length);
+
+  // R + drag around the centre turns it.
+  await page.keyboard.press('r');
+  const c = await canvasAt(page, 0.5, 0.5);
+  await drag(page, { x: c.x + 120, y: c.y }, { x: c.x, y: c.y - 120 });
+  s = await settled(page);
+  const turned = s.splines[0];
+  expect(hausdorff(turned.polyline, movedSpline.polyline)).toBeGreaterThan(0.01 * scale);
+  await expectOnMesh(page, turned, scale);
+  await page.keyboard.press('Escape'); // back to drawing
+  expect((await surface(page)).tool).toBe('draw');
+
+  // RDC, then adaptive: everything is traced again (the polyline changes, stays on the mesh).
+  await page.getByRole('button', { name: 'RDC', exact: true }).click();
+  s = await settled(page);
+  expect(s.options.scheme).toBe('rdc');
+  expect(s.splines[0].polyline).not.toEqual(turned.polyline);
+  await expectOnMesh(page, s.splines[0], scale);
+  await page.getByRole('button', { name: 'Adaptive', exact: true }).click();
+  s = await settled(page);
+  expect(s.options.adaptive).toBeGreaterThan(0);
+  await expectOnMesh(page, s.splines[0], scale);
+  await page.getByRole('button', { name: 'OLR', exact: true }).click();
+  await page.getByRole('button', { name: 'Uniform', exact: true }).click();
+  s = await settled(page);
+
+  // Alt+click on the curve inserts an anchor; Delete removes the selected one.
+  const sp = s.splines[0];
+  const k = Math.floor(sp.polyline.length / 3 / 4);
+  const p = await projected(page, { face: sp.where[3 * k], uv: [sp.where[3 * k + 1], sp.where[3 * k + 2]] });
+  await page.keyboard.down('Alt');
+  await page.mouse.click(p.x, p.y);
+  await page.keyboard.up('Alt');
+  s = await settled(page);
+  expect(s.splines[0].json.points).toHaveLength(sp.json.points.length + 3);
+  expect(s.selection?.point).toBe(3);
+  await page.keyboard.press('c'); // the new anchor: smooth ⇄ corner
+  s = await settled(page);
+  await page.keyboard.press('Delete');
+  s = await settled(page);
+  expect(s.splines[0].json.points).toHaveLength(sp.json.points.length);
+  await expectOnMesh(page, s.splines[0], scale);
+});
+
+test('Surface mode: place an SVG, save it, a bad mesh keeps the old one, the autosave comes back', async ({ page }) => {
+  await openSurface(page);
+  await page.getByTestId('surface-svg-select').selectOption('spline-badge.svg');
+  await expect.poll(async () => (await surface(page)).placing).toBe(true);
+  const centre = await canvasAt(page, 0.5, 0.5);
+  await page.mouse.click(centre.x, centre.y);
+  let s = await settled(page);
+  expect(s.placing).toBe(false);
+  expect(s.splines.length).toBeGreaterThan(3);
+  for (const sp of s.splines.slice(0, 3)) await expectOnMesh(page, sp, s.scale!);
+  const placed = s.splines.length;
+  await page.keyboard.press('Control+z');
+  s = await settled(page);
+  expect(s.splines).toHaveLength(0);
+  await page.keyboard.press('Control+Shift+z');
+  s = await settled(page);
+  expect(s.splines).toHaveLength(placed);
+
+  // Save the drawing as JSON: mesh points on this mesh.
+  const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('surface-save').click()]);
+  const saved = JSON.parse(readFileSync((await download.path())!, 'utf8')) as { mesh: string; splines: unknown[] };
+  expect(saved.mesh).toBe('pebble.ply');
+  expect(saved.splines).toHaveLength(placed);
+
+  // Not a mesh: the error shows, the pebble and its drawing stay.
+  await page.getByTestId('surface-mesh-input').setInputFiles({ name: 'broken.obj', mimeType: 'text/plain', buffer: Buffer.from('v 0 0 0\nf 1 2 3\n') });
+  await expect(page.getByTestId('status-error')).toBeVisible();
+  s = await settled(page);
+  expect(s.file).toBe('pebble.ply');
+  expect(s.splines).toHaveLength(placed);
+  await page.getByTestId('status-error').getByRole('button').click();
+
+  // Another sample, then undo: back to the pebble with its drawing.
+  await page.getByTestId('surface-mesh-sample').selectOption('torus-knot.ply');
+  await expect.poll(async () => (await surface(page)).file).toBe('torus-knot.ply');
+  s = await settled(page);
+  expect(s.splines).toHaveLength(0);
+  expect(s.meshInfo?.boundaryLoops).toBe(0);
+  await page.keyboard.press('Control+z');
+  await expect.poll(async () => (await surface(page)).file).toBe('pebble.ply');
+  s = await settled(page);
+  expect(s.splines).toHaveLength(placed);
+
+  // Reload: Surface mode, the pebble and the drawing come back from the autosave.
+  await expect.poll(async () => (await surface(page)).saved).toBe(true);
+  await page.reload();
+  await page.waitForFunction(() => window.splinekitEditor !== undefined);
+  await page.evaluate(() => window.splinekitEditor!.ready);
+  s = await settled(page);
+  expect(s.active).toBe(true);
+  expect(s.file).toBe('pebble.ply');
+  expect(s.splines).toHaveLength(placed);
+});
+
+test('Surface mode: the sample meshes are small files', () => {
+  for (const f of ['pebble.ply', 'torus-knot.ply', 'vase.obj']) expect(statSync(publicFile(`samples/meshes/${f}`)).size).toBeLessThan(600_000);
+});

@@ -1,0 +1,249 @@
+/**
+ * Surface mode's worker: loads the mesh (parse, weld, precompute) and runs every spline edit and
+ * trace off the main thread. It holds one SurfaceMesh; each request brings a spline's control
+ * points, so the worker keeps no history and a stale request is harmless. Requests are answered
+ * in order, one at a time.
+ */
+import { SurfaceMesh, SurfaceSpline, init, mapSplines, parseSVG, type MeshPoint, type SurfaceSplineJSON } from '../../../src/index.js';
+import { TriangleBVH } from '../../view3d/bvh.js';
+import type { PolygonPaths, SplineOp, SurfaceReply, SurfaceRequest, TracedPolyline } from './protocol.js';
+
+/** The parts of a dedicated worker's global scope used here (web/ compiles with the DOM lib). */
+interface WorkerScope {
+  postMessage(message: SurfaceReply, options?: { transfer?: Transferable[] }): void;
+  addEventListener(type: 'message', listener: (e: MessageEvent<SurfaceRequest>) => void): void;
+}
+const scope = self as unknown as WorkerScope;
+const post = (reply: SurfaceReply, transfer: Transferable[] = []) => scope.postMessage(reply, { transfer });
+
+/** Drawn polylines float this fraction of the mesh size above the surface. */
+const LIFT = 6e-4;
+
+let mesh: SurfaceMesh | null = null;
+/** Smooth vertex normals of `mesh` (area weighted), for lifting polylines. */
+let normals: Float32Array | null = null;
+let lift = 0;
+const ready = init();
+
+// Requests run one after another, in the order they came.
+let queue: Promise<void> = Promise.resolve();
+scope.addEventListener('message', (e) => {
+  const req = e.data;
+  queue = queue.then(() => handle(req));
+});
+
+async function handle(req: SurfaceRequest): Promise<void> {
+  try {
+    await ready;
+    switch (req.type) {
+      case 'load':
+        return await load(req.id, req.bytes, req.name);
+      case 'run':
+        return run(req);
+      case 'path':
+        return path(req.id, req.a, req.b);
+      case 'map':
+        return map(req);
+    }
+  } catch (err) {
+    post({ type: 'error', id: req.id, message: err instanceof Error ? err.message : String(err) });
+  }
+}
+
+async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void> {
+  const t0 = performance.now();
+  const next = await SurfaceMesh.load(new Uint8Array(bytes), name); // throws: the previous mesh stays
+  mesh?.dispose();
+  mesh = next;
+  const P = next.positions, T = next.triangles;
+  normals = vertexNormals(P, T);
+  lift = LIFT * next.scale;
+  const positions = Float32Array.from(P), triangles = new Uint32Array(T.length);
+  triangles.set(T);
+  const bvh = new TriangleBVH(positions, triangles).toArrays();
+  const shownNormals = normals.slice();
+  post({ type: 'loaded', id, info: next.info, positions, triangles, normals: shownNormals, bvh, scale: next.scale, ms: performance.now() - t0 }, [
+    positions.buffer,
+    triangles.buffer,
+    shownNormals.buffer,
+    bvh.bounds.buffer,
+    bvh.nodes.buffer,
+    bvh.order.buffer,
+  ]);
+}
+
+function needMesh(): SurfaceMesh {
+  if (!mesh) throw new Error('no mesh is loaded');
+  return mesh;
+}
+
+function run(req: Extract<SurfaceRequest, { type: 'run' }>): void {
+  const m = needMesh();
+  const t0 = performance.now();
+  let spline: SurfaceSpline | null = req.json ? new SurfaceSpline(m, req.json) : null;
+  try {
+    for (const op of req.ops) spline = apply(m, spline, op);
+    if (!spline) throw new Error('no spline to edit');
+    const json = spline.toJSON();
+    let trace: TracedPolyline | null = null, traceMs = 0;
+    const transfer: Transferable[] = [];
+    if (req.trace) {
+      const t1 = performance.now();
+      const r = spline.trace(req.trace);
+      // The core's own time for the curves (what the paper reports), else the call's.
+      traceMs = typeof r.ms === 'number' && r.ms > 0 ? r.ms : performance.now() - t1;
+      const where = flatPoints(r.points);
+      trace = { xyz: Float64Array.from(r.xyz), lifted: liftPoints(m, r.points, r.xyz), where, segmentStarts: Int32Array.from(r.segmentStarts) };
+      transfer.push(trace.xyz.buffer, trace.lifted.buffer, trace.where.buffer, trace.segmentStarts.buffer);
+    }
+    let polygon: PolygonPaths | null = null;
+    if (req.polygon) {
+      polygon = controlPolygon(m, json);
+      transfer.push(polygon.lifted.buffer, polygon.starts.buffer);
+    }
+    post({ type: 'ran', id: req.id, json, trace, polygon, traceMs, ms: performance.now() - t0 }, transfer);
+  } finally {
+    spline?.dispose();
+  }
+}
+
+/** Applies one edit; returns the spline (a new one for 'fromPolygon'). */
+function apply(m: SurfaceMesh, spline: SurfaceSpline | null, op: SplineOp): SurfaceSpline {
+  if (op.op === 'fromPolygon') {
+    spline?.dispose();
+    return SurfaceSpline.fromPolygon(m, op.anchors);
+  }
+  if (!spline) throw new Error(`no spline to ${op.op}`);
+  switch (op.op) {
+    case 'append':
+      spline.appendAnchor(op.p);
+      break;
+    case 'moveAnchor':
+      spline.moveAnchor(op.index, op.to);
+      break;
+    case 'moveHandle':
+      spline.moveHandle(op.index, op.to);
+      break;
+    case 'setSmooth':
+      spline.setSmooth(op.anchor, op.smooth);
+      break;
+    case 'insert':
+      spline.insert(op.segment, op.t, op.options);
+      break;
+    case 'remove':
+      spline.remove(op.anchor);
+      break;
+    case 'translate':
+      spline.translate(op.from, op.to);
+      break;
+    case 'rotate':
+      spline.rotate(op.center, op.radians);
+      break;
+    case 'scale':
+      spline.scale(op.center, op.factor);
+      break;
+  }
+  return spline;
+}
+
+/** The geodesics anchor → handle of every segment end. */
+function controlPolygon(m: SurfaceMesh, json: SurfaceSplineJSON): PolygonPaths {
+  const pts = json.points, n = pts.length;
+  const parts: Float32Array[] = [];
+  const pairs: [number, number][] = [];
+  for (let a = 0; a < n; a += 3) {
+    if (a + 1 < n) pairs.push([a, a + 1]);
+    if (a - 1 >= 0) pairs.push([a, a - 1]);
+  }
+  if (json.closed && n > 0) pairs.push([0, n - 1]);
+  for (const [a, b] of pairs) {
+    const g = m.shortestPath(pts[a], pts[b]);
+    parts.push(liftPoints(m, g.points, g.xyz));
+  }
+  const total = parts.reduce((s, p) => s + p.length, 0);
+  const lifted = new Float32Array(total), starts = new Int32Array(parts.length);
+  let o = 0;
+  parts.forEach((p, i) => {
+    starts[i] = o / 3;
+    lifted.set(p, o);
+    o += p.length;
+  });
+  return { lifted, starts };
+}
+
+function path(id: number, a: MeshPoint, b: MeshPoint): void {
+  const m = needMesh();
+  const g = m.shortestPath(a, b);
+  const lifted = liftPoints(m, g.points, g.xyz);
+  post({ type: 'path', id, lifted, length: g.length }, [lifted.buffer]);
+}
+
+function map(req: Extract<SurfaceRequest, { type: 'map' }>): void {
+  const m = needMesh();
+  const t0 = performance.now();
+  const doc = parseSVG(req.svg, { name: req.name });
+  if (doc.splines.length === 0) throw new Error(`${req.name}: no curves to place`);
+  const splines = mapSplines(m, doc, { center: req.center, size: req.size, rotation: req.rotation, up: req.up });
+  const json = splines.map((s) => s.toJSON());
+  for (const s of splines) s.dispose();
+  post({ type: 'mapped', id: req.id, splines: json, ms: performance.now() - t0 });
+}
+
+// ---- flat arrays -------------------------------------------------------------------------------
+
+function flatPoints(points: readonly MeshPoint[]): Float64Array {
+  const out = new Float64Array(3 * points.length);
+  points.forEach((p, i) => {
+    out[3 * i] = p.face;
+    out[3 * i + 1] = p.uv[0];
+    out[3 * i + 2] = p.uv[1];
+  });
+  return out;
+}
+
+/** xyz + lift × the interpolated smooth normal at each mesh point. */
+function liftPoints(m: SurfaceMesh, points: readonly MeshPoint[], xyz: ArrayLike<number>): Float32Array {
+  const T = m.triangles, N = normals!;
+  const out = new Float32Array(3 * points.length);
+  for (let i = 0; i < points.length; i++) {
+    const { face, uv } = points[i];
+    const w0 = 1 - uv[0] - uv[1], w1 = uv[0], w2 = uv[1];
+    const a = 3 * T[3 * face], b = 3 * T[3 * face + 1], c = 3 * T[3 * face + 2];
+    let nx = w0 * N[a] + w1 * N[b] + w2 * N[c];
+    let ny = w0 * N[a + 1] + w1 * N[b + 1] + w2 * N[c + 1];
+    let nz = w0 * N[a + 2] + w1 * N[b + 2] + w2 * N[c + 2];
+    const l = Math.hypot(nx, ny, nz) || 1;
+    nx /= l;
+    ny /= l;
+    nz /= l;
+    out[3 * i] = xyz[3 * i] + lift * nx;
+    out[3 * i + 1] = xyz[3 * i + 1] + lift * ny;
+    out[3 * i + 2] = xyz[3 * i + 2] + lift * nz;
+  }
+  return out;
+}
+
+/** Area-weighted vertex normals (unit; zero for unreferenced vertices). */
+function vertexNormals(P: ArrayLike<number>, T: ArrayLike<number>): Float32Array {
+  const N = new Float32Array(P.length);
+  for (let f = 0; f < T.length; f += 3) {
+    const a = 3 * T[f], b = 3 * T[f + 1], c = 3 * T[f + 2];
+    const ux = P[b] - P[a], uy = P[b + 1] - P[a + 1], uz = P[b + 2] - P[a + 2];
+    const vx = P[c] - P[a], vy = P[c + 1] - P[a + 1], vz = P[c + 2] - P[a + 2];
+    const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    for (const k of [a, b, c]) {
+      N[k] += nx;
+      N[k + 1] += ny;
+      N[k + 2] += nz;
+    }
+  }
+  for (let i = 0; i < N.length; i += 3) {
+    const l = Math.hypot(N[i], N[i + 1], N[i + 2]);
+    if (l > 0) {
+      N[i] /= l;
+      N[i + 1] /= l;
+      N[i + 2] /= l;
+    }
+  }
+  return N;
+}
