@@ -5,6 +5,7 @@
  */
 import { basename } from 'node:path';
 import { DEFAULT_MAX_MESH_BYTES, SplinekitError, SurfaceMesh, traceBezier, type MeshPoint, type MeshPointLike, type TraceOptions } from '../index.js';
+import { mulberry32 } from '../core/random.js';
 import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './splinekit.js';
 
 async function loadMesh(path: string): Promise<SurfaceMesh> {
@@ -81,21 +82,9 @@ curves with control points uniform over the surface's area (seed S, default 1). 
 {"curves":[{"points":[{"face":f,"uv":[u,v],"xyz":[x,y,z]},...]}],"stats":{"total_ms":..,
 "per_curve_ms":[...]}}: the whole polyline on the surface, every edge crossing included.`;
 
-/** mulberry32: a small seeded generator, so --random is reproducible. */
-function generator(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
 /** `count` points uniform over the mesh's area. */
 export function randomPoints(mesh: SurfaceMesh, count: number, seed: number): MeshPoint[] {
-  const random = generator(seed);
+  const random = mulberry32(seed);
   const t = mesh.triangles, x = mesh.positions, faces = t.length / 3;
   const cumulative = new Float64Array(faces);
   let total = 0;

@@ -9,6 +9,7 @@
 import Delaunator from 'delaunator';
 import ConstrainautorImport from '@kninnug/constrainautor';
 import { SplinekitError } from '../core/errors.js';
+import { mulberry32 } from '../core/random.js';
 
 // The package's types are its CommonJS-flavoured TypeScript source, read differently under NodeNext
 // and bundler resolution; at runtime its ES build's default export is the class itself.
@@ -485,16 +486,4 @@ function selfIntersection(poly: Float64Array): [number, number] | null {
     }
   }
   return null;
-}
-
-/** A small deterministic PRNG (mulberry32), uniform in [0, 1). */
-function mulberry32(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
