@@ -9,6 +9,7 @@ import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
 import { skinAccuracy, skinSpeed, skinWeightsSpeed } from './skin.mjs';
+import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
 const data = join(root, '../shared/data');
@@ -98,10 +99,13 @@ const skin = skinSpeed(data, time);
 const accuracy = skinAccuracy(data);
 const weightsSpeed = skinWeightsSpeed(data);
 
+// ---- surface (b/Surf) -------------------------------------------------------------------------
+const surface = await surfaceBenchmarks(root, data, { log: console.log });
+
 // ---- report -----------------------------------------------------------------------------------
 const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, ${(os.totalmem() / 2 ** 30).toFixed(0)} GiB, Node ${process.version}, ${os.platform()} ${os.release()}`;
 const date = new Date().toISOString().slice(0, 10);
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -175,6 +179,7 @@ ${accuracyTable.join('\n')}
 All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${f(geoRatio, 1)}×), **${f(worstRatio, 1)}×** at worst
 (the fit must beat that baseline on every file and by ≥ 2× on average).
 
+${surfaceSection(surface)}
 ## Memory and size
 
 - malloc'd bytes in the wasm heap after 20 more imports of ${bigRel.replace('svg/', '')}: **${leak}** more than before (0 = nothing leaked).

@@ -1,0 +1,493 @@
+// Surface benchmarks (b/Surf; imported by bench/run.mjs): validity of traced curves on every shared
+// mesh, per-curve trace time and dragging speed against the interactive budgets (wasm in Node), and
+// locally shortest paths against the exact geodesic distance with memory and precompute time
+// (native, bench/native/surface_bench.cpp).
+import { execFileSync } from 'node:child_process';
+import { readFileSync, readdirSync, statSync } from 'node:fs';
+import os from 'node:os';
+import { join } from 'node:path';
+import { SurfaceMesh, SurfaceSpline, traceBezier } from '../dist/index.js';
+
+/** mulberry32, as in src/cli/surface.ts. */
+function generator(seed) {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/**
+ * `count` points uniform over the mesh's area: the same code and seeds as randomPoints in
+ * src/cli/surface.ts (`splinekit trace --random N --seed S` draws the same polygons). Copied because
+ * dist/cli/surface.js cannot be imported on its own: it imports the CLI entry point, which imports it
+ * back and runs the command line when loaded.
+ */
+export function randomPoints(mesh, count, seed) {
+  const random = generator(seed);
+  const t = mesh.triangles, x = mesh.positions, faces = t.length / 3;
+  const cumulative = new Float64Array(faces);
+  let total = 0;
+  for (let f = 0; f < faces; f++) {
+    const a = 3 * t[3 * f], b = 3 * t[3 * f + 1], c = 3 * t[3 * f + 2];
+    const e1 = [x[b] - x[a], x[b + 1] - x[a + 1], x[b + 2] - x[a + 2]];
+    const e2 = [x[c] - x[a], x[c + 1] - x[a + 1], x[c + 2] - x[a + 2]];
+    total += Math.hypot(e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]) / 2;
+    cumulative[f] = total;
+  }
+  const out = [];
+  for (let i = 0; i < count; i++) {
+    const r = random() * total;
+    let lo = 0, hi = faces - 1;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (cumulative[mid] < r) lo = mid + 1;
+      else hi = mid;
+    }
+    let u = random(), v = random();
+    if (u + v > 1) (u = 1 - u), (v = 1 - v);
+    out.push({ face: lo, uv: [u, v] });
+  }
+  return out;
+}
+
+/** Value at fraction p of the sorted samples (nearest rank). */
+export function percentile(xs, p) {
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.min(s.length - 1, Math.max(0, Math.ceil(p * s.length) - 1))];
+}
+
+/** The shared meshes (top level of ../shared/data/meshes), smallest file first. */
+export function sharedMeshes(data) {
+  const dir = join(data, 'meshes');
+  return readdirSync(dir)
+    .filter((f) => /\.(obj|ply|off|stl|gltf|glb)$/i.test(f) && statSync(join(dir, f)).isFile())
+    .sort((a, b) => statSync(join(dir, a)).size - statSync(join(dir, b)).size);
+}
+
+export async function loadMesh(data, file) {
+  const t0 = performance.now();
+  const mesh = await SurfaceMesh.load(readFileSync(join(data, 'meshes', file)), file);
+  return { mesh, load_ms: performance.now() - t0 };
+}
+
+// ---- (1) validity ---------------------------------------------------------------------------------
+
+export const CONFIGS = [
+  { key: 'olr', label: 'OLR uniform (5 levels)', options: { scheme: 'olr' } },
+  { key: 'olr_adaptive', label: 'OLR adaptive 5°', options: { scheme: 'olr', adaptive: 5 } },
+  { key: 'rdc', label: 'RDC uniform (4 levels)', options: { scheme: 'rdc' } },
+  { key: 'rdc_adaptive', label: 'RDC adaptive 5°', options: { scheme: 'rdc', adaptive: 5 } },
+];
+
+/**
+ * Continuity checker in file space. A point's support is the set of its face's vertices with a
+ * nonzero barycentric weight; two points share a face when they lie on the same face or the support
+ * of one is contained in the other's face. Vertices at the same position count as one (the core
+ * welds them), so the check does not depend on how the file splits vertices.
+ */
+export function continuityChecker(mesh, eps = 1e-12) {
+  const x = mesh.positions, t = mesh.triangles, nv = x.length / 3;
+  const canonical = new Int32Array(nv);
+  const seen = new Map();
+  for (let v = 0; v < nv; v++) {
+    const key = `${x[3 * v]},${x[3 * v + 1]},${x[3 * v + 2]}`;
+    const first = seen.get(key);
+    if (first === undefined) seen.set(key, v), (canonical[v] = v);
+    else canonical[v] = first;
+  }
+  const support = (p) => {
+    const w = [1 - p.uv[0] - p.uv[1], p.uv[0], p.uv[1]];
+    const out = [];
+    for (let k = 0; k < 3; k++) if (Math.abs(w[k]) > eps) out.push(canonical[t[3 * p.face + k]]);
+    return out;
+  };
+  const inFace = (vs, f) => {
+    const a = canonical[t[3 * f]], b = canonical[t[3 * f + 1]], c = canonical[t[3 * f + 2]];
+    return vs.every((v) => v === a || v === b || v === c);
+  };
+  return (p, q) => p.face === q.face || inFace(support(p), q.face) || inFace(support(q), p.face);
+}
+
+/**
+ * Traces `count` random polygons (control points uniform over the area, seed 1) with every
+ * configuration. A curve is valid when tracing terminates without error and every pair of
+ * consecutive polyline points shares a face. Also checks that the polyline starts at P0 and ends
+ * at P3 (within 1e-9 of the bounding-box diagonal).
+ */
+export function surfaceValidity(mesh, count, seed = 1) {
+  const shares = continuityChecker(mesh);
+  const points = randomPoints(mesh, 4 * count, seed);
+  const tol = 1e-9 * mesh.scale;
+  const out = {};
+  // Warm-up (wasm tier-up) so that the per-curve times below are representative.
+  for (let i = 0; i < Math.min(5, count); i++) traceBezier(mesh, points.slice(4 * i, 4 * i + 4));
+  for (const config of CONFIGS) {
+    const r = { curves: count, terminated: 0, continuous: 0, valid: 0, ends_interpolated: 0, errors: [], first_break: null };
+    const ms = [], sizes = [];
+    for (let i = 0; i < count; i++) {
+      const controls = points.slice(4 * i, 4 * i + 4);
+      let traced;
+      try {
+        traced = traceBezier(mesh, controls, config.options);
+      } catch (err) {
+        if (r.errors.length < 5) r.errors.push(`curve ${i}: ${err.message}`);
+        continue;
+      }
+      r.terminated++;
+      ms.push(traced.ms);
+      sizes.push(traced.points.length);
+      let ok = true;
+      for (let k = 0; k + 1 < traced.points.length && ok; k++) {
+        if (!shares(traced.points[k], traced.points[k + 1])) {
+          ok = false;
+          r.first_break ??= { curve: i, at: k, a: traced.points[k], b: traced.points[k + 1] };
+        }
+      }
+      if (ok) r.continuous++, r.valid++;
+      const n = traced.points.length, xyz = traced.xyz;
+      const p0 = mesh.xyz(controls[0]), p3 = mesh.xyz(controls[3]);
+      const d0 = Math.hypot(xyz[0] - p0[0], xyz[1] - p0[1], xyz[2] - p0[2]);
+      const d3 = Math.hypot(xyz[3 * n - 3] - p3[0], xyz[3 * n - 2] - p3[1], xyz[3 * n - 1] - p3[2]);
+      if (d0 <= tol && d3 <= tol) r.ends_interpolated++;
+    }
+    r.valid_pct = (100 * r.valid) / count;
+    r.median_ms = ms.length ? percentile(ms, 0.5) : null;
+    r.max_ms = ms.length ? Math.max(...ms) : null;
+    r.median_points = sizes.length ? percentile(sizes, 0.5) : null;
+    out[config.key] = r;
+  }
+  return out;
+}
+
+// ---- (2) per-curve trace time ---------------------------------------------------------------------
+
+/** A unit tangent at p at angle θ in its face's plane (file winding; the sign does not matter). */
+function tangentAt(mesh, p, theta) {
+  const n = mesh.normal(p);
+  const t = mesh.triangles, x = mesh.positions, f = 3 * p.face;
+  const a = 3 * t[f], b = 3 * t[f + 1];
+  let e = [x[b] - x[a], x[b + 1] - x[a + 1], x[b + 2] - x[a + 2]];
+  const d = e[0] * n[0] + e[1] * n[1] + e[2] * n[2];
+  e = [e[0] - d * n[0], e[1] - d * n[1], e[2] - d * n[2]];
+  const len = Math.hypot(...e) || 1;
+  e = e.map((c) => c / len);
+  const g = [n[1] * e[2] - n[2] * e[1], n[2] * e[0] - n[0] * e[2], n[0] * e[1] - n[1] * e[0]];
+  const c = Math.cos(theta), s = Math.sin(theta);
+  return [c * e[0] + s * g[0], c * e[1] + s * g[1], c * e[2] + s * g[2]];
+}
+
+/** The end of the straightest geodesic from p at angle θ for `length`. */
+function walk(mesh, p, theta, length) {
+  if (length <= 0) return p;
+  const path = mesh.straightest(p, tangentAt(mesh, p, theta), length);
+  return path.points[path.points.length - 1];
+}
+
+/**
+ * "Moderate" control polygons: a random centre (uniform over the area) and 4 control points at the
+ * ends of straightest geodesics from it, in random directions, of random lengths up to
+ * `radius` × the bounding-box diagonal: every control point lies in the geodesic disc of that radius.
+ */
+export function moderatePolygons(mesh, count, seed, radius = 0.05) {
+  const random = generator(seed + 1000);
+  const centres = randomPoints(mesh, count, seed);
+  return centres.map((c) => [0, 1, 2, 3].map(() => walk(mesh, c, 2 * Math.PI * random(), radius * mesh.scale * random())));
+}
+
+function stats(ms) {
+  return { curves: ms.length, median_ms: percentile(ms, 0.5), p90_ms: percentile(ms, 0.9), p99_ms: percentile(ms, 0.99), max_ms: Math.max(...ms) };
+}
+
+/** Per-curve ms (traceBezier's `ms`: the wasm work) of OLR uniform 5 levels, random and moderate polygons. */
+export function surfaceTraceSpeed(mesh, count, seed = 1) {
+  const points = randomPoints(mesh, 4 * count, seed);
+  const random = Array.from({ length: count }, (_, i) => points.slice(4 * i, 4 * i + 4));
+  const moderate = moderatePolygons(mesh, count, seed);
+  const options = { scheme: 'olr', levels: 5 };
+  for (let i = 0; i < 10; i++) traceBezier(mesh, moderate[i % count], options); // warm-up
+  const time = (polygons) => polygons.map((p) => traceBezier(mesh, p, options).ms);
+  return { random: stats(time(random)), moderate: stats(time(moderate)) };
+}
+
+// ---- (3) dragging -----------------------------------------------------------------------------------
+
+/**
+ * A moderate 2-segment spline (3 anchors within a 5% disc, straight handles, smooth middle anchor);
+ * its middle anchor is dragged by `moves` successive steps of 0.2% of the diagonal along a
+ * straightest geodesic (the drag targets are computed beforehand: picking is the viewer's job).
+ * Each step is timed as moveAnchor + trace() (wall clock in Node, wrapper included).
+ */
+export function surfaceDrag(mesh, moves = 60, seed = 3, passes = 3, options = { scheme: 'olr', levels: 5 }) {
+  const random = generator(seed);
+  const centre = randomPoints(mesh, 1, seed)[0];
+  const r = 0.05 * mesh.scale;
+  const anchors = [walk(mesh, centre, Math.PI, r * 0.8), centre, walk(mesh, centre, 0.3 * random(), r * 0.8)];
+  const spline = SurfaceSpline.fromPolygon(mesh, anchors);
+  spline.setSmooth(3, true);
+  const targets = [];
+  let at = spline.points[3];
+  const heading = Math.PI / 2 + 0.5 * random();
+  for (let i = 0; i < moves; i++) targets.push((at = walk(mesh, at, heading, 0.002 * mesh.scale)));
+  // Warm-up on a copy: the same first moves (the very first one is reported as the cold move).
+  const start = spline.toJSON();
+  const copy = SurfaceSpline.fromJSON(mesh, start);
+  const cold = [];
+  for (const target of targets.slice(0, 5)) {
+    const t0 = performance.now();
+    copy.moveAnchor(3, target);
+    copy.trace(options);
+    cold.push(performance.now() - t0);
+  }
+  // The same drag replayed `passes` times from the same start: the first pass as it came, and per
+  // move the best of the passes (the work is identical; the spread is other load on the machine).
+  const wall = [], move = [], wasm = [];
+  let points = 0;
+  for (let pass = 0; pass < passes; pass++) {
+    const s = SurfaceSpline.fromJSON(mesh, start);
+    const w = [], m = [], x = [];
+    for (const target of targets) {
+      const t0 = performance.now();
+      s.moveAnchor(3, target);
+      const t1 = performance.now();
+      const traced = s.trace(options);
+      w.push(performance.now() - t0);
+      m.push(t1 - t0);
+      x.push(traced.ms);
+      if (pass === 0) points += traced.points.length;
+    }
+    wall.push(w), move.push(m), wasm.push(x);
+  }
+  const best = (rows) => rows[0].map((_, i) => Math.min(...rows.map((r) => r[i])));
+  const bestWall = best(wall);
+  return {
+    moves, passes, step: 0.002, median_ms: percentile(wall[0], 0.5), p99_ms: percentile(wall[0], 0.99),
+    best_of_passes_median_ms: percentile(bestWall, 0.5), best_of_passes_p99_ms: percentile(bestWall, 0.99),
+    move_anchor_median_ms: percentile(move[0], 0.5), trace_wasm_median_ms: percentile(wasm[0], 0.5), trace_wasm_max_ms: Math.max(...wasm[0]),
+    first_cold_move_ms: cold[0], mean_points: points / moves, per_pass_max_ms: wall.map((w) => Math.max(...w)),
+  };
+}
+
+// ---- (4) shortest paths vs exact geodesics (native) -----------------------------------------------
+
+export function surfaceGeodesics(root, data, file, sources, targets = 20, seed = 1) {
+  const out = execFileSync(join(root, 'build/native/surface_bench'), [join(data, 'meshes', file), String(sources), String(targets), String(seed)], {
+    encoding: 'utf8',
+    maxBuffer: 1 << 20,
+  });
+  return JSON.parse(out);
+}
+
+// ---- everything --------------------------------------------------------------------------------------
+
+export const TRACE_SPEED_MESHES = ['nefertiti.obj', 'spot_loop2_369k.ply'];
+export const DRAG_MESH = 'spot_loop2_369k.ply';
+
+/**
+ * All surface benchmarks. options: curves per mesh and configuration for validity (default 100),
+ * curves per kind for trace speed (200), sources for the exact comparison (5; 1 on meshes of more
+ * than 200k triangles), log (progress).
+ */
+export async function surfaceBenchmarks(root, data, options = {}) {
+  const { validityCurves = 100, speedCurves = 200, sources = 5, bigSources = 1, targets = 20, files = sharedMeshes(data), log = () => {} } = options;
+  const meshes = [];
+  const speed = {};
+  let drag = null;
+  const load_before = os.loadavg()[0];
+  const t_start = performance.now();
+  for (const file of files) {
+    const { mesh, load_ms } = await loadMesh(data, file);
+    const t0 = performance.now();
+    const row = { file, faces: mesh.faceCount, vertices: mesh.info.vertices, load_ms, wasm_bytes_per_triangle: mesh.info.bytes / mesh.faceCount, warnings: mesh.info.warnings };
+    row.validity = surfaceValidity(mesh, validityCurves);
+    if (TRACE_SPEED_MESHES.includes(file)) speed[file] = { faces: mesh.faceCount, ...surfaceTraceSpeed(mesh, speedCurves) };
+    if (file === DRAG_MESH) drag = { file, faces: mesh.faceCount, ...surfaceDrag(mesh) };
+    mesh.dispose();
+    row.wasm_seconds = (performance.now() - t0) / 1000;
+    log(`surface ${file}: ${row.faces} faces, validity ${CONFIGS.map((c) => `${c.key} ${row.validity[c.key].valid_pct}%`).join(', ')} (${row.wasm_seconds.toFixed(1)} s)`);
+    const t1 = performance.now();
+    row.geodesics = surfaceGeodesics(root, data, file, row.faces > 200000 ? bigSources : sources, targets);
+    row.native_seconds = (performance.now() - t1) / 1000;
+    log(`surface ${file}: refined ${row.geodesics.refined.within_pct}% within 0.5%, dual ${row.geodesics.dual.within_pct}%, ${row.geodesics.bytes_per_triangle.toFixed(1)} B/tri (${row.native_seconds.toFixed(1)} s)`);
+    meshes.push(row);
+  }
+  meshes.sort((a, b) => a.faces - b.faces);
+  const seconds = (performance.now() - t_start) / 1000;
+  return { validity_curves: validityCurves, speed_curves: speedCurves, meshes, speed, drag, seconds, load_average: [load_before, os.loadavg()[0]] };
+}
+
+// ---- report -------------------------------------------------------------------------------------------
+
+const f = (x, d = 2) => (x == null ? '–' : x.toFixed(d));
+const pct = (x) => `${Number.isInteger(x) ? x : x.toFixed(1)}%`;
+const name = (file) => file.replace(/\.(obj|ply)$/, '');
+
+/** The "Surface (b/Surf)" section of BENCHMARKS.md. */
+export function surfaceSection(s) {
+  const allValid = s.meshes.every((m) => CONFIGS.every((c) => m.validity[c.key].valid === m.validity[c.key].curves));
+  const allEnds = s.meshes.every((m) => CONFIGS.every((c) => m.validity[c.key].ends_interpolated === m.validity[c.key].terminated));
+  const validity = [
+    `| mesh | triangles | curves | ${CONFIGS.map((c) => c.label).join(' | ')} |`,
+    `|---|---:|---:|${CONFIGS.map(() => '---:').join('|')}|`,
+    ...s.meshes.map((m) => `| ${name(m.file)} | ${m.faces} | ${m.validity.olr.curves} | ${CONFIGS.map((c) => {
+      const v = m.validity[c.key];
+      return `${pct(v.valid_pct)} (${f(v.median_ms, 1)} ms)`;
+    }).join(' | ')} |`),
+  ];
+  const speedRows = [];
+  for (const [file, r] of Object.entries(s.speed)) {
+    for (const kind of ['random', 'moderate']) {
+      const x = r[kind];
+      speedRows.push(`| ${name(file)} | ${r.faces} | ${kind === 'random' ? 'random over the surface' : 'moderate (5% disc)'} | ${x.curves} | ${f(x.median_ms)} | ${f(x.p90_ms)} | ${f(x.p99_ms)} | ${f(x.median_ms / 5)} | ${f(x.p99_ms / 50)} |`);
+    }
+  }
+  const speed = [
+    '| mesh | triangles | control polygons | curves | median ms | p90 ms | p99 ms | median / 5 ms | p99 / 50 ms |',
+    '|---|---:|---|---:|---:|---:|---:|---:|---:|',
+    ...speedRows,
+  ];
+  const d = s.drag;
+  const geo = [
+    '| mesh | triangles | paths (sources × targets) | refined: within 0.5% | shorter than exact | worst ratio | mean ms | dual (paper): within 0.5% | worst ratio | mean ms | exact ms / source |',
+    '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+    ...s.meshes.map((m) => {
+      const g = m.geodesics, r = g.refined, u = g.dual;
+      return `| ${name(m.file)} | ${g.triangles} | ${r.paths} (${g.sources} × ${g.targets_per_source}) | **${pct(r.within_pct)}** | ${r.shorter + u.shorter} | ${f(r.worst_ratio, 4)} | ${f(r.mean_ms)} | ${pct(u.within_pct)} | ${f(u.worst_ratio, 4)} | ${f(u.mean_ms, 3)} | ${f(g.exact_ms_per_source, 0)} |`;
+    }),
+  ];
+  const mem = [
+    '| mesh | triangles | search-graph nodes / triangle | mesh bytes | solver bytes | bytes / triangle | after the paths | build_mesh ms | GeodesicSolver ms | precompute ms | wasm: bytes / triangle | wasm: load ms (parse + build) |',
+    '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+    ...s.meshes.map((m) => {
+      const g = m.geodesics;
+      return `| ${name(m.file)} | ${g.triangles} | ${f(g.graph_nodes / g.triangles, 1)} | ${g.mesh_bytes} | ${g.solver_bytes} | **${f(g.bytes_per_triangle, 1)}** | ${f(g.bytes_per_triangle_after_paths, 1)} | ${f(g.build_mesh_ms, 1)} | ${f(g.solver_ms, 1)} | ${f(g.precompute_ms, 1)} | ${f(m.wasm_bytes_per_triangle, 1)} | ${f(m.load_ms, 0)} |`;
+    }),
+  ];
+  const worstValid = Math.min(...s.meshes.flatMap((m) => CONFIGS.map((c) => m.validity[c.key].valid_pct)));
+  const big = s.meshes.filter((m) => m.faces > 200000).map((m) => name(m.file));
+  const refinedMin = Math.min(...s.meshes.map((m) => m.geodesics.refined.within_pct));
+  const refinedMax = Math.max(...s.meshes.map((m) => m.geodesics.refined.within_pct));
+  const dualMin = Math.min(...s.meshes.map((m) => m.geodesics.dual.within_pct));
+  const dualMax = Math.max(...s.meshes.map((m) => m.geodesics.dual.within_pct));
+  const shorter = s.meshes.reduce((n, m) => n + m.geodesics.refined.shorter + m.geodesics.dual.shorter, 0);
+  const worstBytes = Math.max(...s.meshes.map((m) => m.geodesics.bytes_per_triangle));
+  const worstMesh = s.meshes.find((m) => m.geodesics.bytes_per_triangle === worstBytes);
+  const over = s.meshes.filter((m) => m.geodesics.bytes_per_triangle > 120);
+  const overNote = over.length
+    ? `over 120: ${over.map((m) => m.geodesics.graph_nodes / m.geodesics.triangles > 6
+        ? `${name(m.file)} (${f(m.geodesics.graph_nodes / m.geodesics.triangles, 1)} search-graph nodes per triangle: its edges are longer than 1% of the diagonal and carry extra nodes)`
+        : name(m.file)).join(', ')}`
+    : 'every mesh is within it';
+  return `## Surface (b/Surf)
+
+Curves on the shared meshes (../shared/data/meshes, top level), in wasm through the TS API
+(SurfaceMesh, traceBezier, SurfaceSpline) unless marked native. Random control points are uniform over
+the surface's area (the same generator and seeds as \`splinekit trace --random\`). These measurements
+took ${f(s.seconds, 0)} s; the 1-minute load average was ${f(s.load_average[0], 1)} at their start and
+${f(s.load_average[1], 1)} at their end (other work shared the 2 cores), so times are noisy.
+
+${summary(s)}
+
+### Validity of traced curves (b/Surf §6.1)
+
+${s.validity_curves} random control polygons per mesh (the same ones for every configuration), traced
+with traceBezier. A curve is valid when tracing terminates without error and every two consecutive
+points of its polyline share a face (checked in JS on the file-order output: the vertices with nonzero
+barycentric weight of one point belong to the other's face, or both are on the same face). Cells: %
+valid (median per-curve ms).
+
+${validity.join('\n')}
+
+Worst cell: **${pct(worstValid)}** valid. ${allEnds ? 'Every traced polyline starts at P0 and ends at P3 (within 1e-9 of the diagonal).' : 'Some polylines do not start at P0 or end at P3: see build/bench/results.json.'}${allValid ? '' : ' Failures are listed (first break, errors) in build/bench/results.json.'}
+Not measured here: adaptive smoothness (turning ≤ 5° between consecutive geodesic segments), which
+the native tests check (tests/native/surface/validity_test.cpp, 10 polygons per mesh).
+
+### Per-curve trace time (OLR, uniform, 5 levels)
+
+Per-curve ms as reported by traceBezier (the wasm work, timed inside the module), after 10 warm-up
+curves. Random: 4 control points uniform over the whole surface (the paper's protocol; the first 100
+are the polygons of the validity table). Moderate: 4
+control points at the ends of straightest geodesics from a random centre, in random directions, of
+random lengths up to 5% of the bounding-box diagonal. Budget: median ≤ 5 ms, p99 ≤ 50 ms (ratio > 1 =
+over budget).
+
+${speed.join('\n')}
+
+### Dragging
+
+On ${name(d.file)} (${d.faces} triangles), a 2-segment spline whose 3 anchors lie within a 5% disc
+(straight handles, smooth middle anchor); the middle anchor moves ${d.moves} times by 0.2% of the
+diagonal along a straightest geodesic. Per move: moveAnchor + trace() (OLR, 5 levels), wall clock in
+Node including the wrapper, after 5 warm-up moves on a copy of the spline (the first of them, with
+cold code, is shown apart); ${f(d.mean_points, 0)} polyline points on average. With ${d.moves} samples
+the p99 is the slowest move. The same drag was replayed ${d.passes} times: the first row is the first
+pass as measured; the second takes each move's best time over the passes (same work each time, so the
+difference is other load on the machine; slowest move per pass: ${d.per_pass_max_ms.map((x) => f(x, 1)).join(', ')} ms).
+Budget 16 ms (one frame at 60 Hz).
+
+| moves | median ms | p99 ms | median / 16 ms | p99 / 16 ms |
+|---|---:|---:|---:|---:|
+| first pass | ${f(d.median_ms)} | ${f(d.p99_ms)} | ${f(d.median_ms / 16)} | ${f(d.p99_ms / 16)} |
+| best of ${d.passes} passes | ${f(d.best_of_passes_median_ms)} | ${f(d.best_of_passes_p99_ms)} | ${f(d.best_of_passes_median_ms / 16)} | ${f(d.best_of_passes_p99_ms / 16)} |
+
+First pass, parts: moveAnchor ${f(d.move_anchor_median_ms)} ms median; trace (wasm) ${f(d.trace_wasm_median_ms)} ms median,
+${f(d.trace_wasm_max_ms)} ms max. The first warm-up move (cold code): ${f(d.first_cold_move_ms, 1)} ms.
+
+### Shortest paths vs the exact geodesic distance (native)
+
+bench/native/surface_bench.cpp (g++ -O3, one thread): random source vertices, each with ${s.meshes[0].geodesics.targets_per_source} random
+target vertices; ${s.meshes[0].geodesics.sources} sources per mesh, ${bigSourceCount(s)} on ${big.join(', ') || 'none'} (one exact solve there: ${bigExact(s)}). Exact distances
+from tests/native/reference/exact_geodesic.h (MMP windows with saddle pseudo-sources) on the same
+repaired mesh. Ratio = path length / exact distance. "Refined" is GeodesicSolver::shortest_path with
+its default search graph (3 Steiner nodes per edge, A* bound drained); "dual" is SearchGraph::kDual,
+the paper's dual graph (face nodes, first arrival), which curve tracing uses. Both are then
+straightened (funnel + flips). "Shorter than exact" counts paths of both graphs shorter than the exact
+distance by more than 1e-9 relative (must be 0).
+
+${geo.join('\n')}
+
+Refined: ${pct(refinedMin)}–${pct(refinedMax)} of paths within 0.5% of the exact distance; dual graph: ${pct(dualMin)}–${pct(dualMax)}.
+Paths shorter than exact: **${shorter}**.
+
+### Memory and precompute
+
+Bytes held by the mesh structures (positions, faces, adjacency, vertex maps: mesh_bytes) and by the
+solver (search graph and search scratch: GeodesicSolver::bytes), per triangle, right after building
+and again after the shortest paths above (the scratch list of touched nodes grows with the searches); precompute = build_mesh
+(welding, orientation, adjacency) + GeodesicSolver construction, native, median of 3. The wasm columns
+are SurfaceMesh.info.bytes per triangle and SurfaceMesh.load (file parse included) in Node.
+Budget ≤ ~120 bytes per triangle: worst **${f(worstBytes, 1)}** (${name(worstMesh.file)}); ${overNote}.
+
+${mem.join('\n')}
+`;
+}
+
+function summary(s) {
+  const cells = s.meshes.flatMap((m) => CONFIGS.map((c) => m.validity[c.key]));
+  const valid = cells.reduce((n, v) => n + v.valid, 0), total = cells.reduce((n, v) => n + v.curves, 0);
+  const speed = Object.entries(s.speed);
+  const over = (x, budget) => `${f(x, x < 10 ? 2 : 1)} ms (${f(x / budget, x < budget ? 2 : 1)}× the budget)`;
+  const g = s.meshes.map((m) => m.geodesics);
+  const range = (xs, d = 0) => `${f(Math.min(...xs), d)}–${f(Math.max(...xs), d)}`;
+  const d = s.drag;
+  return [
+    `- Validity: **${valid} of ${total}** traced curves valid (${s.meshes.length} meshes × ${CONFIGS.length} configurations × ${s.validity_curves} random polygons).`,
+    ...speed.map(([file, r]) => `- Trace time on ${name(file)} (OLR, 5 levels): random polygons median ${over(r.random.median_ms, 5)}, p99 ${over(r.random.p99_ms, 50)}; moderate ones median ${over(r.moderate.median_ms, 5)}, p99 ${over(r.moderate.p99_ms, 50)}.`),
+    `- Dragging an anchor on ${name(d.file)}: median ${over(d.median_ms, 16)}, p99 ${over(d.p99_ms, 16)} per move (first pass).`,
+    `- Shortest paths (native): ${range(g.map((x) => x.refined.within_pct))}% within 0.5% of the exact distance with the refined graph, ${range(g.map((x) => x.dual.within_pct))}% with the paper's dual graph; ${g.reduce((n, x) => n + x.refined.shorter + x.dual.shorter, 0)} shorter than exact.`,
+    `- Memory: ${range(g.filter((x) => x.triangles >= 10000).map((x) => x.bytes_per_triangle), 1)} bytes per triangle on the meshes of ≥ 10k triangles, ${range(g.map((x) => x.bytes_per_triangle), 1)} on all (budget ~120); precompute ${f(Math.max(...g.map((x) => x.precompute_ms)), 0)} ms on the largest mesh.`,
+  ].join('\n');
+}
+
+function bigExact(s) {
+  const g = s.meshes.find((m) => m.faces > 200000)?.geodesics;
+  return g ? `${f(g.exact_ms_per_source / 1000, 0)} s, ${f(g.peak_rss_mb / 1024, 1)} GB peak` : '';
+}
+
+function bigSourceCount(s) {
+  const big = s.meshes.filter((m) => m.faces > 200000);
+  return big.length ? big[0].geodesics.sources : 0;
+}
