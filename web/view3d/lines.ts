@@ -3,6 +3,28 @@ import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
 
+/**
+ * How far lines are drawn toward the camera, as a fraction of their depth (world units per unit
+ * of distance): a pixel or two at any zoom, so a curve on the surface wins the depth test on
+ * either side of the surface without floating visibly. Shared by every FatLine.
+ */
+export const TOWARD_CAMERA = { value: 0 };
+
+/** Moves a line's camera-space ends toward the camera by TOWARD_CAMERA × their depth. */
+function liftTowardCamera(material: LineMaterial): void {
+  material.onBeforeCompile = (shader) => {
+    shader.uniforms.towardCamera = TOWARD_CAMERA;
+    shader.vertexShader = shader.vertexShader
+      .replace('uniform float linewidth;', 'uniform float linewidth;\nuniform float towardCamera;')
+      .replace(
+        'vec4 end = modelViewMatrix * vec4( instanceEnd, 1.0 );',
+        `vec4 end = modelViewMatrix * vec4( instanceEnd, 1.0 );
+        start.xyz *= 1.0 - towardCamera;
+        end.xyz *= 1.0 - towardCamera;`,
+      );
+  };
+}
+
 export interface FatLineOptions {
   color: ColorRepresentation;
   /** Width in CSS pixels. */
@@ -31,6 +53,8 @@ export class FatLine {
       options.xray && options.xray > 0
         ? new LineMaterial({ color: new Color(options.color).getHex(), linewidth: Math.max(1, options.width * 0.75), worldUnits: false, transparent: true, opacity: options.xray, depthTest: false, depthWrite: false })
         : null;
+    liftTowardCamera(this.front);
+    if (this.back) liftTowardCamera(this.back);
     this.object.renderOrder = options.order ?? 0;
   }
 

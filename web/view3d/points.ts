@@ -15,6 +15,7 @@ attribute vec3 color;
 attribute float size;
 attribute float shape;
 uniform float pixelRatio;
+/** Toward the camera by this fraction of the depth (about the marker's radius). */
 uniform float lift;
 varying vec3 vColor;
 varying float vShape;
@@ -24,9 +25,8 @@ void main() {
   vShape = shape;
   vSize = size * pixelRatio;
   vec4 mv = modelViewMatrix * vec4(position, 1.0);
-  // Toward the camera by 'lift' world units: the whole sprite clears the surface it sits on.
-  float d = length(mv.xyz);
-  mv.xyz *= max(d - lift, d * 0.5) / max(d, 1e-9);
+  // Toward the camera: the whole sprite clears the surface it sits on.
+  mv.xyz *= 1.0 - lift;
   gl_Position = projectionMatrix * mv;
   gl_PointSize = vSize;
 }`;
@@ -93,7 +93,7 @@ export class MarkerLayer {
     }
   }
 
-  /** World units the markers are drawn toward the camera (about their radius at their depth). */
+  /** Fraction of their depth the markers are drawn toward the camera (about their radius). */
   setLift(lift: number): void {
     this.front.uniforms.lift.value = lift;
     this.back.uniforms.lift.value = lift;

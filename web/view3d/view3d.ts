@@ -193,6 +193,9 @@ export class View3D {
       box: [bb.min.x, bb.min.y, bb.min.z, bb.max.x, bb.max.y, bb.max.z],
       radius: Math.max(sphere.radius, 1e-9),
     };
+    // Zoom limits around the mesh's size: not lost in space, not through the surface at once.
+    this.controls.minDistance = this.shown.radius * 0.02;
+    this.controls.maxDistance = this.shown.radius * 20;
     if (fit) this.fit();
     this.requestRender();
     return this.shown;

@@ -1,5 +1,5 @@
 import { Group } from 'three';
-import { FatLine } from '../../view3d/lines.js';
+import { FatLine, TOWARD_CAMERA } from '../../view3d/lines.js';
 import { MarkerLayer, type Marker } from '../../view3d/points.js';
 import type { View3D } from '../../view3d/view3d.js';
 
@@ -91,8 +91,10 @@ export class SurfaceLayers {
     this.markers.setLift(lift);
   }
 
-  /** The canvas was resized: lines keep their pixel widths. */
+  /** The view changed: lines keep their pixel widths and their lift toward the camera. */
   resized(): void {
+    // 1.5 pixels' worth at any depth (world units per pixel grow linearly with the depth).
+    TOWARD_CAMERA.value = this.view.worldPerPixel(1) * 1.5;
     for (const c of this.curves.values()) c.line.setResolution(this.view.size);
     this.polygon.setResolution(this.view.size);
     this.preview.setResolution(this.view.size);

@@ -1365,14 +1365,11 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
     layers.setPolygon(polygon?.lifted ?? null, polygon?.starts ?? null);
     layers.setPreview(this.preview);
 
-    // Markers, drawn a little above the surface.
+    // Markers on the surface (drawn toward the camera by their radius, see MarkerLayer).
     const markers: Marker[] = [];
-    const lift = this.mesh ? this.mesh.scale * 6e-4 : 0;
     const put = (p: MeshPoint, color: string, size: number, shape: 'disc' | 'square') => {
       const at = this.xyz(p);
-      if (!at) return;
-      const n = this.normal(p);
-      markers.push({ x: at[0] + lift * n.x, y: at[1] + lift * n.y, z: at[2] + lift * n.z, color, size, shape });
+      if (at) markers.push({ x: at[0], y: at[1], z: at[2], color, size, shape });
     };
     if (this.ctx?.state.overlay !== false) {
       for (const sp of d.splines) {
@@ -1388,8 +1385,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
     if (this.pending) put(this.pending, SURFACE_COLORS.pending, 10, 'square');
     const g = this.gesture;
     if (g && (g.kind === 'rotate' || g.kind === 'scale')) put(g.center, SURFACE_COLORS.center, 12, 'disc');
-    const distance = view.camera.position.distanceTo(view.controls.target);
-    layers.setMarkers(markers, view.worldPerPixel(distance) * 7);
+    layers.setMarkers(markers, view.worldPerPixel(1) * 7);
     view.requestRender();
   }
 

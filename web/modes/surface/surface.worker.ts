@@ -16,8 +16,12 @@ interface WorkerScope {
 const scope = self as unknown as WorkerScope;
 const post = (reply: SurfaceReply, transfer: Transferable[] = []) => scope.postMessage(reply, { transfer });
 
-/** Drawn polylines float this fraction of the mesh size above the surface. */
-const LIFT = 6e-4;
+/**
+ * Drawn polylines float this fraction of the mesh size above the surface (along its normal). Zero:
+ * the view draws them toward the camera instead (web/view3d/lines.ts), which works on both sides
+ * of the surface (the inside of the vase, seen through its mouth).
+ */
+const LIFT = 0;
 
 let mesh: SurfaceMesh | null = null;
 /** Smooth vertex normals of `mesh` (area weighted), for lifting polylines. */
@@ -203,6 +207,7 @@ function flatPoints(points: readonly MeshPoint[]): Float64Array {
 
 /** xyz + lift × the interpolated smooth normal at each mesh point. */
 function liftPoints(m: SurfaceMesh, points: readonly MeshPoint[], xyz: ArrayLike<number>): Float32Array {
+  if (lift === 0) return Float32Array.from(xyz);
   const T = m.triangles, N = normals!;
   const out = new Float32Array(3 * points.length);
   for (let i = 0; i < points.length; i++) {
