@@ -115,6 +115,13 @@ async function expectOnMesh(page: Page, spline: Spline, scale: number): Promise<
   expect(cuts, 'polyline pieces that leave the faces of their ends').toBe(0);
 }
 
+/** Length of a polyline. */
+function length(X: number[]): number {
+  let l = 0;
+  for (let i = 3; i < X.length; i += 3) l += Math.hypot(X[i] - X[i - 3], X[i + 1] - X[i - 2], X[i + 2] - X[i - 1]);
+  return l;
+}
+
 /** Largest distance from a point of polyline A to the nearest point of polyline B. */
 function hausdorff(A: number[], B: number[]): number {
   let worst = 0;
@@ -187,7 +194,7 @@ test('Surface mode: draw a spline on a mesh, drag an anchor, undo and redo', asy
   expect(statSync('docs/surface.png').size).toBeLessThan(300_000);
 });
 
-test('Surface mode: move and turn a spline, switch RDC/OLR and adaptive, insert and delete points', async ({ page }) => {
+test('Surface mode: move, turn and scale a spline, switch RDC/OLR and adaptive, insert and delete points', async ({ page }) => {
   await openSurface(page);
   let s = await drawSpline(page, SPOTS.slice(0, 3));
   const scale = s.scale!;
@@ -216,6 +223,14 @@ test('Surface mode: move and turn a spline, switch RDC/OLR and adaptive, insert 
   const turned = s.splines[0];
   expect(hausdorff(turned.polyline, movedSpline.polyline)).toBeGreaterThan(0.01 * scale);
   await expectOnMesh(page, turned, scale);
+
+  // S + drag away from the centre grows it: the traced curve gets longer.
+  await page.keyboard.press('s');
+  await drag(page, { x: c.x + 80, y: c.y + 10 }, { x: c.x + 130, y: c.y + 16 });
+  s = await settled(page);
+  const grown = s.splines[0];
+  expect(length(grown.polyline), 'the curve grew').toBeGreaterThan(1.2 * length(turned.polyline));
+  await expectOnMesh(page, grown, scale);
   await page.keyboard.press('Escape'); // back to drawing
   expect((await surface(page)).tool).toBe('draw');
 
@@ -251,7 +266,7 @@ test('Surface mode: move and turn a spline, switch RDC/OLR and adaptive, insert 
   await expectOnMesh(page, s.splines[0], scale);
 });
 
-test('Surface mode: place an SVG, save it, a bad mesh keeps the old one, the autosave comes back', async ({ page }) => {
+test('Surface mode: place an SVG, save and load it, a bad mesh keeps the old one, the autosave comes back', async ({ page }) => {
   await openSurface(page);
   await page.getByTestId('surface-svg-select').selectOption('spline-badge.svg');
   await expect.poll(async () => (await surface(page)).placing).toBe(true);
@@ -274,6 +289,13 @@ test('Surface mode: place an SVG, save it, a bad mesh keeps the old one, the aut
   const saved = JSON.parse(readFileSync((await download.path())!, 'utf8')) as { mesh: string; splines: unknown[] };
   expect(saved.mesh).toBe('pebble.ply');
   expect(saved.splines).toHaveLength(placed);
+  // Clear, then load it back: the same splines (undo of the load brings the empty drawing).
+  await page.getByTestId('surface-clear').click();
+  expect((await settled(page)).splines).toHaveLength(0);
+  await page.getByTestId('surface-drawing-input').setInputFiles((await download.path())!);
+  await expect.poll(async () => (await surface(page)).splines.length).toBe(placed);
+  s = await settled(page);
+  expect(s.splines.map((sp) => sp.json)).toEqual(saved.splines);
 
   // Not a mesh: the error shows, the pebble and its drawing stay.
   await page.getByTestId('surface-mesh-input').setInputFiles({ name: 'broken.obj', mimeType: 'text/plain', buffer: Buffer.from('v 0 0 0\nf 1 2 3\n') });
