@@ -6,55 +6,10 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync, readdirSync, statSync } from 'node:fs';
 import os from 'node:os';
 import { join } from 'node:path';
-import { SurfaceMesh, SurfaceSpline, traceBezier } from '../dist/index.js';
+import { SurfaceMesh, SurfaceSpline, randomMeshPoints, traceBezier } from '../dist/index.js';
 
-/** mulberry32, as in src/cli/surface.ts. */
-function generator(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+const randomPoints = randomMeshPoints; // the same polygons as `splinekit trace --random`
 
-/**
- * `count` points uniform over the mesh's area: the same code and seeds as randomPoints in
- * src/cli/surface.ts (`splinekit trace --random N --seed S` draws the same polygons). Copied because
- * dist/cli/surface.js cannot be imported on its own: it imports the CLI entry point, which imports it
- * back and runs the command line when loaded.
- */
-export function randomPoints(mesh, count, seed) {
-  const random = generator(seed);
-  const t = mesh.triangles, x = mesh.positions, faces = t.length / 3;
-  const cumulative = new Float64Array(faces);
-  let total = 0;
-  for (let f = 0; f < faces; f++) {
-    const a = 3 * t[3 * f], b = 3 * t[3 * f + 1], c = 3 * t[3 * f + 2];
-    const e1 = [x[b] - x[a], x[b + 1] - x[a + 1], x[b + 2] - x[a + 2]];
-    const e2 = [x[c] - x[a], x[c + 1] - x[a + 1], x[c + 2] - x[a + 2]];
-    total += Math.hypot(e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]) / 2;
-    cumulative[f] = total;
-  }
-  const out = [];
-  for (let i = 0; i < count; i++) {
-    const r = random() * total;
-    let lo = 0, hi = faces - 1;
-    while (lo < hi) {
-      const mid = (lo + hi) >> 1;
-      if (cumulative[mid] < r) lo = mid + 1;
-      else hi = mid;
-    }
-    let u = random(), v = random();
-    if (u + v > 1) (u = 1 - u), (v = 1 - v);
-    out.push({ face: lo, uv: [u, v] });
-  }
-  return out;
-}
-
-/** Value at fraction p of the sorted samples (nearest rank). */
 export function percentile(xs, p) {
   const s = [...xs].sort((a, b) => a - b);
   return s[Math.min(s.length - 1, Math.max(0, Math.ceil(p * s.length) - 1))];

@@ -71,3 +71,4 @@ export {
   type TracedCurve,
 } from './surface/spline.js';
 export { mapSplines, type SvgMapOptions } from './surface/svg-map.js';
+export { randomMeshPoints } from './surface/sampling.js';

@@ -56,7 +56,7 @@ struct ShortestPathOptions {
   // Graph resolution (phase (i)): `steiner` nodes on every edge, and edges longer than
   // long_edge_fraction of the bounding-box diagonal get one node per such length. The paper uses
   // 5% and face nodes only; measured on the shared meshes (BENCHMARKS.md), 3 nodes per edge and 1%
-  // take the share of paths within 0.5% of the exact geodesic distance from 73-94% to 97-100%.
+  // take the share of paths within 0.5% of the exact geodesic distance from 26-96% to 94-100%.
   double long_edge_fraction = 0.01;
   int steiner = 3;
 };
