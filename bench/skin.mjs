@@ -3,18 +3,7 @@
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { SkinRig, SkinWeights, buildDomain, domainWeights, memory, outlineSamples, parseSVG } from '../dist/index.js';
-
-/** Deterministic PRNG (mulberry32). */
-export function rng(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+import { mulberry32 } from '../dist/core/random.js';
 
 /** `count` handles spread over the artwork: farthest-point sampling of on-curve points. */
 export function spreadHandles(doc, count) {
@@ -54,7 +43,7 @@ export function skinSpeed(data, time) {
   const rel = 'svg/illustrations/oc_road_runner_car.svg';
   const doc = parseSVG(readFileSync(join(data, rel), 'utf8'));
   const handles = spreadHandles(doc, 4);
-  const pose = randomPose(handles, rng(1));
+  const pose = randomPose(handles, mulberry32(1));
   const precompute = [];
   let rig;
   for (let i = 0; i < 3; i++) {
@@ -89,7 +78,7 @@ export function skinAccuracy(data, poses = 5) {
     for (const count of [4, 8]) {
       const handles = spreadHandles(doc, count);
       const rig = SkinRig.create(doc, { handles });
-      const random = rng(count * 1000 + f.length);
+      const random = mulberry32(count * 1000 + f.length);
       const sums = { fit: 0, naive: 0, interpolated: 0, jacobian: 0 };
       for (let p = 0; p < poses; p++) {
         rig.pose(randomPose(handles, random));

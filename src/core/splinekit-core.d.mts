@@ -84,7 +84,7 @@ export interface SurfaceMeshHandle extends EmbindObject {
   curveMilliseconds(curve: number): number;
   error(): string;
   shortestPath(): number;
-  pathAt(t: number): number;
+  pathAt(t0: number, t1: number): number;
   straightest(dx: number, dy: number, dz: number, length: number): number;
   trace(curves: number, scheme: number, levels: number, adaptiveDegrees: number): number;
   evalCurve(t: number, scheme: number, levels: number, adaptiveDegrees: number): number;

@@ -172,7 +172,7 @@ export class SurfaceSpline {
   /** Deletes an anchor with its handles; the segments on both sides merge. */
   remove(anchor: number): void {
     const k = this.anchorIndex(anchor);
-    if (this.segmentCount < 2 || (this.closed && this.segmentCount < 2))
+    if (this.segmentCount < 2)
       throw new SplinekitError('invalid-input', 'a spline keeps at least one segment');
     const n = this._points.length;
     if (this.closed) {
@@ -276,10 +276,8 @@ export class SurfaceSpline {
 
 /** The points at 1/3 and 2/3 of the shortest path from a to b. */
 function thirds(mesh: SurfaceMesh, a: MeshPoint, b: MeshPoint): [MeshPoint, MeshPoint] {
-  const at = (t: number): MeshPoint => {
-    mesh.writePoints([a, b]);
-    checkStatus(mesh.handle.pathAt(t), 'handle placement', () => mesh.handle.error());
-    return mesh.readPoints()[0];
-  };
-  return [at(1 / 3), at(2 / 3)];
+  mesh.writePoints([a, b]);
+  checkStatus(mesh.handle.pathAt(1 / 3, 2 / 3), 'handle placement', () => mesh.handle.error());
+  const [h1, h2] = mesh.readPoints();
+  return [h1, h2];
 }

@@ -8,6 +8,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
 import { cli, readShared, sharedData } from './helpers.js';
+import { mulberry32 as random } from '../../src/core/random.js';
 
 const dir = mkdtempSync(join(tmpdir(), 'splinekit-surface-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
@@ -155,17 +156,6 @@ function faceKeys(mesh: Mesh, f: number): string[] {
   return mesh.faces[f].map((v) => key(mesh.positions[v]));
 }
 
-/** Seeded generator (mulberry32) for the tests' own random choices. */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 // ---------------------------------------------------------------------------------------------
 // Meshes written by the test

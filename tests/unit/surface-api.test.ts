@@ -18,6 +18,7 @@ import {
   type MeshPointLike,
 } from '../../src/index.js';
 import { readShared } from './helpers.js';
+import { mulberry32 as random } from '../../src/core/random.js';
 
 beforeAll(async () => {
   await init();
@@ -47,17 +48,6 @@ function readObj(text: string): { positions: Vec3[]; faces: number[][] } {
   return { positions, faces };
 }
 
-/** Seeded generator (mulberry32). */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /**
  * A jittered 8×8 grid over [0, 4]² in the plane z = 0, faces wound counter-clockwise seen from +z,

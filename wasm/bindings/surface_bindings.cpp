@@ -88,14 +88,14 @@ class SurfaceMeshHandle {
     return kOk;
   }
 
-  // The point at arc-length fraction t of the shortest path from point 0 to point 1.
-  int pathAt(double t) {
+  // The points at arc-length fractions t0 and t1 of the shortest path from point 0 to point 1.
+  int pathAt(double t0, double t1) {
     MeshPoint a, b;
     if (!input(0, a) || !input(1, b)) return kInvalidInput;
-    if (!(t >= 0 && t <= 1)) return fail("the path fraction must lie in [0, 1]");
+    if (!(t0 >= 0 && t0 <= 1 && t1 >= 0 && t1 <= 1)) return fail("path fractions must lie in [0, 1]");
     GeodesicPath path;
     if (!solver_->shortest_path(a, b, path)) return fail("the two points lie on parts of the mesh that are not connected");
-    scratch_.assign(1, eval_path(*mesh_, path, t));
+    scratch_.assign({eval_path(*mesh_, path, t0), eval_path(*mesh_, path, t1)});
     output(scratch_);
     return kOk;
   }

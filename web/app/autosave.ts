@@ -83,3 +83,32 @@ export function loadSession(): SavedSession | null {
 export function clearSession(): void {
   remove(SESSION_KEY);
 }
+
+/**
+ * Saves once things have been quiet for `ms` (schedule() after each change), or at once on flush()
+ * (mode switch, page hide) when a save is pending. Used by the modes that keep their own drawings.
+ */
+export class DebouncedSave {
+  private timer = 0;
+
+  constructor(
+    private readonly ms: number,
+    private readonly save: () => void,
+  ) {}
+
+  get pending(): boolean {
+    return this.timer !== 0;
+  }
+
+  schedule(): void {
+    window.clearTimeout(this.timer);
+    this.timer = window.setTimeout(() => this.flush(), this.ms);
+  }
+
+  flush(): void {
+    if (!this.timer) return;
+    window.clearTimeout(this.timer);
+    this.timer = 0;
+    this.save();
+  }
+}

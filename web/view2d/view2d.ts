@@ -17,6 +17,7 @@ import type { SvgDocument } from '../../src/index.js';
 import { Emitter } from '../app/events.js';
 import { buildDrawing, type DrawingStats } from './drawing.js';
 import { Viewport } from './viewport.js';
+import { FrameScheduler } from '../app/frames.js';
 
 /** A pointer on the view, in screen (canvas CSS pixels) and document coordinates. */
 export interface ViewPointer {
@@ -79,7 +80,10 @@ export class View2D {
   private doc: SvgDocument | null = null;
   private builtScale = 0;
   private rebuildTimer = 0;
-  private frameRequest = 0;
+  private readonly frames = new FrameScheduler((time) => {
+    this.render();
+    this.events.emit('render', time);
+  });
   private spaceDown = false;
   private drag: { id: number; sx: number; sy: number; lastX: number; lastY: number; pan: boolean; moved: boolean } | null = null;
 
@@ -198,23 +202,12 @@ export class View2D {
   }
 
   requestRender(): void {
-    if (this.frameRequest) return;
-    this.frameRequest = requestAnimationFrame((time) => {
-      this.frameRequest = 0;
-      this.render();
-      this.events.emit('render', time);
-    });
+    this.frames.request();
   }
 
   /** Resolves once the next frame has been drawn. */
   nextFrame(): Promise<void> {
-    return new Promise((resolve) => {
-      const off = this.events.on('render', () => {
-        off();
-        resolve();
-      });
-      this.requestRender();
-    });
+    return this.frames.next();
   }
 
   /** Draws now (normally use requestRender). */

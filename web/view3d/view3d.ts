@@ -19,6 +19,7 @@ import {
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { Emitter } from '../app/events.js';
 import { TriangleBVH, type BVHArrays, type RayHit } from './bvh.js';
+import { FrameScheduler } from '../app/frames.js';
 
 /** A pointer on the 3D view: canvas CSS pixels plus the modifier keys. */
 export interface Pointer3D {
@@ -99,7 +100,10 @@ export class View3D {
   private meshObject: Mesh | null = null;
   private shown: ShownMesh | null = null;
   private bvh: TriangleBVH | null = null;
-  private frameRequest = 0;
+  private readonly frames = new FrameScheduler((time) => {
+    this.render();
+    this.events.emit('render', time);
+  });
   private visible = true;
   private gesture: { id: number; sx: number; sy: number; claimed: boolean; moved: boolean } | null = null;
 
@@ -302,23 +306,12 @@ export class View3D {
   }
 
   requestRender(): void {
-    if (this.frameRequest) return;
-    this.frameRequest = requestAnimationFrame((time) => {
-      this.frameRequest = 0;
-      this.render();
-      this.events.emit('render', time);
-    });
+    this.frames.request();
   }
 
   /** Resolves once the next frame has been drawn. */
   nextFrame(): Promise<void> {
-    return new Promise((resolve) => {
-      const off = this.events.on('render', () => {
-        off();
-        resolve();
-      });
-      this.requestRender();
-    });
+    return this.frames.next();
   }
 
   render(): void {
@@ -328,7 +321,7 @@ export class View3D {
   }
 
   dispose(): void {
-    cancelAnimationFrame(this.frameRequest);
+    this.frames.cancel();
     this.controls.dispose();
     this.clearMesh();
     this.material.dispose();

@@ -19,6 +19,7 @@ namespace splinekit::surface {
 namespace {
 
 using Poly = std::array<Vec3, 4>;
+using testing::point_at;
 
 // ---- Euclidean reference ------------------------------------------------------------------------
 
@@ -80,23 +81,6 @@ double distance_to_polyline(const Vec3& q, const std::vector<Vec3>& pts) {
 
 // ---- Mesh helpers -------------------------------------------------------------------------------
 
-// The mesh point at 3D position x (the face nearest to x, clamped barycentrics).
-MeshPoint point_at(const TriMesh& mesh, const Vec3& x) {
-  double best = std::numeric_limits<double>::infinity();
-  MeshPoint out;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const auto& t = mesh.triangles[f];
-    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
-    Eigen::Matrix<double, 3, 2> m;
-    m << b - a, c - a;
-    Eigen::Vector2d uv = (m.transpose() * m).ldlt().solve(m.transpose() * (x - a));
-    uv = uv.cwiseMax(0.0);
-    if (uv.sum() > 1) uv /= uv.sum();
-    const double d = (a + m * uv - x).norm();
-    if (d < best) best = d, out = {static_cast<int>(f), uv};
-  }
-  return out;
-}
 
 Vec3 pos(const TriMesh& mesh, const MeshPoint& p) { return eval_position(mesh, p); }
 

@@ -6,24 +6,12 @@
 namespace splinekit::surface {
 namespace {
 using Poly = std::array<Vec3, 4>;
+using testing::point_at;
 Vec3 blossom(const Poly& P, double x1, double x2, double x3) {
   const double xs[3] = {x1, x2, x3};
   std::array<Vec3, 4> d = P;
   for (int r = 0; r < 3; ++r) for (int i = 0; i + 1 < 4 - r; ++i) d[i] = (1 - xs[r]) * d[i] + xs[r] * d[i + 1];
   return d[0];
-}
-MeshPoint point_at(const TriMesh& mesh, const Vec3& x) {
-  double best = 1e300; MeshPoint out;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const auto& t = mesh.triangles[f];
-    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
-    Eigen::Matrix<double, 3, 2> m; m << b - a, c - a;
-    Eigen::Vector2d uv = (m.transpose() * m).ldlt().solve(m.transpose() * (x - a));
-    uv = uv.cwiseMax(0.0); if (uv.sum() > 1) uv /= uv.sum();
-    const double d = (a + m * uv - x).norm();
-    if (d < best) best = d, out = {static_cast<int>(f), uv};
-  }
-  return out;
 }
 const Poly kP = {Vec3(0.1, 0.15, 0), Vec3(0.3, 0.9, 0), Vec3(0.75, 0.05, 0), Vec3(0.9, 0.8, 0)};
 

@@ -15,29 +15,12 @@
 namespace splinekit::surface {
 namespace {
 
+using testing::point_at;
+
 constexpr double kPi = 3.14159265358979323846;
 
 Vec3 pos(const TriMesh& mesh, const MeshPoint& p) { return eval_position(mesh, p); }
 
-// The mesh point at 3D position x (the face nearest to x, clamped barycentrics); faces whose
-// normal disagrees with `normal` (when given) are skipped, to pick a side on cube edges.
-MeshPoint point_at(const TriMesh& mesh, const Vec3& x, const Vec3& normal = Vec3::Zero()) {
-  double best = std::numeric_limits<double>::infinity();
-  MeshPoint out;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    if (normal.norm() > 0 && face_normal(mesh, static_cast<int>(f)).dot(normal) < 0.99) continue;
-    const auto& t = mesh.triangles[f];
-    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
-    Eigen::Matrix<double, 3, 2> m;
-    m << b - a, c - a;
-    Eigen::Vector2d uv = (m.transpose() * m).ldlt().solve(m.transpose() * (x - a));
-    uv = uv.cwiseMax(0.0);
-    if (uv.sum() > 1) uv /= uv.sum();
-    const double d = (a + m * uv - x).norm();
-    if (d < best) best = d, out = {static_cast<int>(f), uv};
-  }
-  return out;
-}
 
 int vertex_at(const TriMesh& mesh, const Vec3& x) {
   for (size_t v = 0; v < mesh.positions.size(); ++v)

@@ -4,7 +4,10 @@
 
 #include "surface/mesh.h"
 
+#include <Eigen/Dense>
+
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -103,6 +106,26 @@ inline Arrays cylinder(int around, int up, double r = 1, double h = 2) {
       a.triangles.insert(a.triangles.end(), {a00, a10, a11, a00, a11, a01});
     }
   return a;
+}
+
+// The mesh point at 3D position x: the face nearest to x with clamped barycentrics. Faces whose
+// normal disagrees with `normal` (when given) are skipped, to pick a side on a cube's edges.
+inline MeshPoint point_at(const TriMesh& mesh, const Vec3& x, const Vec3& normal = Vec3::Zero()) {
+  double best = std::numeric_limits<double>::infinity();
+  MeshPoint out;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (normal.norm() > 0 && face_normal(mesh, static_cast<int>(f)).dot(normal) < 0.99) continue;
+    const auto& t = mesh.triangles[f];
+    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+    Eigen::Matrix<double, 3, 2> m;
+    m << b - a, c - a;
+    Eigen::Vector2d uv = (m.transpose() * m).ldlt().solve(m.transpose() * (x - a));
+    uv = uv.cwiseMax(0.0);
+    if (uv.sum() > 1) uv /= uv.sum();
+    const double d = (a + m * uv - x).norm();
+    if (d < best) best = d, out = {static_cast<int>(f), uv};
+  }
+  return out;
 }
 
 // The shared test data folder (../shared/data next to the repository).

@@ -109,114 +109,102 @@ void CurveTracer::rdc_split(const RdcNode& node, RdcNode& left, RdcNode& right) 
   right.t0 = tm, right.t1 = node.t1;
 }
 
-bool CurveTracer::rdc_flat(const RdcNode& node, double angle) {
+// Whether the polygon with these sides turns less than `angle` at both inner points.
+bool CurveTracer::flat(const Sides& sides, double angle) {
   const TriMesh& mesh = solver_.mesh();
   for (int i = 0; i < 2; ++i) {
-    const Tangent in = end_tangent(mesh, node.sides[i]);
-    const Tangent out = start_tangent(mesh, node.sides[i + 1]);
+    const Tangent in = end_tangent(mesh, sides[i]);
+    const Tangent out = start_tangent(mesh, sides[i + 1]);
     if (in.dir.norm() == 0 || out.dir.norm() == 0) continue;
-    if (turning_angle(mesh, node.sides[i].end, in, out) >= angle) return false;
+    if (turning_angle(mesh, sides[i].end, in, out) >= angle) return false;
   }
   return true;
 }
 
-void CurveTracer::rdc_trace(const RdcNode& node, int level, const TraceOptions& options,
-                            std::vector<const RdcNode*>& stack, std::vector<MeshPoint>& polyline) {
-  const bool leaf = options.adaptive ? (level >= options.max_levels || rdc_flat(node, options.angle))
-                                     : level >= options.levels;
-  if (leaf) {
-    for (const GeodesicPath& side : node.sides) append_path(side, polyline);
-    return;
-  }
+bool CurveTracer::rdc_stop(const RdcNode& node, int level, const TraceOptions& options) {
+  if (!options.adaptive) return level >= options.levels;
+  return level >= options.max_levels || flat(node.sides, options.angle);
+}
+
+template <class Leaf>
+void CurveTracer::rdc_visit(const RdcNode& node, int level, const TraceOptions& options, Leaf&& leaf) {
+  if (rdc_stop(node, level, options)) return leaf(node);
   RdcNode left, right;
   rdc_split(node, left, right);
-  rdc_trace(left, level + 1, options, stack, polyline);
-  rdc_trace(right, level + 1, options, stack, polyline);
+  rdc_visit(left, level + 1, options, leaf);
+  rdc_visit(right, level + 1, options, leaf);
 }
 
 CurveTracer::RdcNode CurveTracer::rdc_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options) {
   RdcNode node = rdc_root(polygon);
-  for (int level = 0;; ++level) {
-    const bool leaf = options.adaptive ? (level >= options.max_levels || rdc_flat(node, options.angle))
-                                       : level >= options.levels;
-    if (leaf) return node;
+  for (int level = 0; !rdc_stop(node, level, options); ++level) {
     RdcNode left, right;
     rdc_split(node, left, right);
     node = t <= left.t1 ? std::move(left) : std::move(right);
   }
+  return node;
 }
 
 // ---- OLR ----------------------------------------------------------------------------------------
 
-void CurveTracer::olr_refine(const std::vector<MeshPoint>& old_points, int level, std::vector<MeshPoint>& out) {
+CurveTracer::Sides CurveTracer::sides_of(const std::array<MeshPoint, 4>& points) {
+  return {path(points[0], points[1]), path(points[1], points[2]), path(points[2], points[3])};
+}
+
+// Points first .. first+count-1 of level+1 from the level's points and the paths between them,
+// both indexed from global point `offset` (0 for a whole polygon, m for interval m's four points).
+void CurveTracer::olr_points(int level, int N, const MeshPoint* points, const GeodesicPath* sides, int offset, int first,
+                             int count, MeshPoint* out) {
   const TriMesh& mesh = solver_.mesh();
+  auto pt = [&](int j) { return points[j - offset]; };
+  auto avg = [&](int j, double w) { return eval_path(mesh, sides[j - offset], w); };
+  auto mix = [&](const MeshPoint& x, const MeshPoint& y) { return average(x, y, 0.5); };
+  for (int i = 0; i < count; ++i) out[i] = olr_point(level, N, first + i, pt, avg, mix);
+}
+
+void CurveTracer::olr_refine(const std::vector<MeshPoint>& old_points, int level, std::vector<MeshPoint>& out) {
   const int N = static_cast<int>(old_points.size());
   std::vector<GeodesicPath> sides(N - 1);
   for (int j = 0; j + 1 < N; ++j) sides[j] = path(old_points[j], old_points[j + 1]);
-  auto pt = [&](int j) { return old_points[j]; };
-  auto avg = [&](int j, double w) { return eval_path(mesh, sides[j], w); };
-  auto mix = [&](const MeshPoint& x, const MeshPoint& y) { return average(x, y, 0.5); };
-  const int M = 2 * N - 3;
-  out.resize(M);
-  for (int i = 0; i < M; ++i) out[i] = olr_point(level, N, i, pt, avg, mix);
+  out.resize(2 * N - 3);
+  olr_points(level, N, old_points.data(), sides.data(), 0, 0, 2 * N - 3, out.data());
 }
 
-bool CurveTracer::polygon_flat(const MeshPoint* points, int count, double angle) {
-  const TriMesh& mesh = solver_.mesh();
-  GeodesicPath prev = path(points[0], points[1]);
-  for (int i = 1; i + 1 < count; ++i) {
-    GeodesicPath next = path(points[i], points[i + 1]);
-    const Tangent in = end_tangent(mesh, prev), out = start_tangent(mesh, next);
-    if (in.dir.norm() > 0 && out.dir.norm() > 0 && turning_angle(mesh, points[i], in, out) >= angle) return false;
-    prev = std::move(next);
-  }
-  return true;
+// Adaptive OLR stops at a node whose polygon is flat, never at the root (it is the Bézier polygon).
+bool CurveTracer::olr_stop(const Sides& sides, int level, const TraceOptions& options) {
+  return level >= options.max_levels || (level > 0 && flat(sides, options.angle));
 }
 
 void CurveTracer::olr_adaptive(const std::array<MeshPoint, 4>& points, int level, int interval,
                                const TraceOptions& options, std::vector<MeshPoint>& out) {
-  if (level >= options.max_levels || (level > 0 && polygon_flat(points.data(), 4, options.angle))) {
+  const Sides sides = sides_of(points);
+  if (olr_stop(sides, level, options)) {
     // A leaf adds its Bézier polygon (blossoms at its knots), so that neighbouring leaves of
     // different levels meet at a point of the curve with collinear handles. (§4.2.1 adds the
     // rightmost B-spline control point; across a change of level that point doubles back.)
-    const ControlPolygon bezier = olr_bezier(points, level, interval);
+    const ControlPolygon bezier = olr_bezier(points, sides, level, interval);
     out.insert(out.end(), bezier.begin() + (out.empty() ? 0 : 1), bezier.end());
     return;
   }
   // The five points of the two children (new indices 2m .. 2m+4).
-  const TriMesh& mesh = solver_.mesh();
-  const int N = (1 << level) + 3, m = interval;
-  std::array<GeodesicPath, 3> sides;
-  for (int j = 0; j < 3; ++j) sides[j] = path(points[j], points[j + 1]);
-  auto pt = [&](int j) { return points[j - m]; };
-  auto avg = [&](int j, double w) { return eval_path(mesh, sides[j - m], w); };
-  auto mix = [&](const MeshPoint& x, const MeshPoint& y) { return average(x, y, 0.5); };
+  const int m = interval;
   std::array<MeshPoint, 5> next;
-  for (int i = 0; i < 5; ++i) next[i] = olr_point(level, N, 2 * m + i, pt, avg, mix);
+  olr_points(level, (1 << level) + 3, points.data(), sides.data(), m, 2 * m, 5, next.data());
   olr_adaptive({next[0], next[1], next[2], next[3]}, level + 1, 2 * m, options, out);
   olr_adaptive({next[1], next[2], next[3], next[4]}, level + 1, 2 * m + 1, options, out);
 }
 
 void CurveTracer::olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options,
-                           std::array<MeshPoint, 4>& points, int& level, int& interval) {
-  const TriMesh& mesh = solver_.mesh();
+                           std::array<MeshPoint, 4>& points, Sides& sides, int& level, int& interval) {
   points = polygon;
   interval = 0;
   for (level = 0;; ++level) {
-    const bool leaf = options.adaptive
-                          ? (level >= options.max_levels || (level > 0 && polygon_flat(points.data(), 4, options.angle)))
-                          : level >= options.levels;
-    if (leaf) return;
-    const int N = (1 << level) + 3, m = interval;
-    std::array<GeodesicPath, 3> sides;
-    for (int j = 0; j < 3; ++j) sides[j] = path(points[j], points[j + 1]);
-    auto pt = [&](int j) { return points[j - m]; };
-    auto avg = [&](int j, double w) { return eval_path(mesh, sides[j - m], w); };
-    auto mix = [&](const MeshPoint& x, const MeshPoint& y) { return average(x, y, 0.5); };
-    const double mid = std::ldexp(2.0 * m + 1, -(level + 1));
-    const int child = t <= mid ? 0 : 1;
+    sides = sides_of(points);
+    if (options.adaptive ? olr_stop(sides, level, options) : level >= options.levels) return;
+    const int m = interval;
+    const int child = t <= std::ldexp(2.0 * m + 1, -(level + 1)) ? 0 : 1;
     std::array<MeshPoint, 4> next;
-    for (int i = 0; i < 4; ++i) next[i] = olr_point(level, N, 2 * m + child + i, pt, avg, mix);
+    olr_points(level, (1 << level) + 3, points.data(), sides.data(), m, 2 * m + child, 4, next.data());
     points = next;
     interval = 2 * m + child;
   }
@@ -224,7 +212,8 @@ void CurveTracer::olr_leaf(const ControlPolygon& polygon, double t, const TraceO
 
 // The Bézier polygon of interval m of level n: blossoms f(a,a,a), f(a,a,b), f(a,b,b), f(b,b,b) by the
 // de Boor recurrence with manifold averages.
-ControlPolygon CurveTracer::olr_bezier(const std::array<MeshPoint, 4>& points, int level, int m) {
+ControlPolygon CurveTracer::olr_bezier(const std::array<MeshPoint, 4>& points, const Sides& sides, int level, int m) {
+  const TriMesh& mesh = solver_.mesh();
   const double a = olr_knot(level, m + 3), b = olr_knot(level, m + 4);
   auto blossom = [&](double x1, double x2, double x3) {
     const double xs[3] = {x1, x2, x3};
@@ -234,7 +223,9 @@ ControlPolygon CurveTracer::olr_bezier(const std::array<MeshPoint, 4>& points, i
         const int I = m + i;
         const double lo = olr_knot(level, I), hi = olr_knot(level, I + 4 - r);
         const double alpha = hi > lo ? (xs[r - 1] - lo) / (hi - lo) : 0;
-        d[i] = average(d[i - 1], d[i], alpha);
+        // The first step averages consecutive control points: along the sides already known.
+        d[i] = r == 1 ? (alpha <= 0 ? d[i - 1] : alpha >= 1 ? d[i] : eval_path(mesh, sides[i - 1], alpha))
+                      : average(d[i - 1], d[i], alpha);
       }
     }
     return d[3];
@@ -260,35 +251,21 @@ void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& o
     }
     return;
   }
-  std::vector<MeshPoint> polyline;
-  std::vector<const RdcNode*> stack;
-  points.clear();
   // The RDC polygon: the end points of every leaf's sides.
-  struct Collector {
-    static void run(CurveTracer& tracer, const RdcNode& node, int level, const TraceOptions& options,
-                    std::vector<MeshPoint>& out) {
-      const bool leaf = options.adaptive ? (level >= options.max_levels || tracer.rdc_flat(node, options.angle))
-                                         : level >= options.levels;
-      if (leaf) {
-        if (out.empty()) out.push_back(node.sides[0].start);
-        for (const GeodesicPath& side : node.sides) out.push_back(side.end);
-        return;
-      }
-      RdcNode left, right;
-      tracer.rdc_split(node, left, right);
-      run(tracer, left, level + 1, options, out);
-      run(tracer, right, level + 1, options, out);
-    }
-  };
-  Collector::run(*this, rdc_root(polygon), 0, options, points);
+  points.clear();
+  rdc_visit(rdc_root(polygon), 0, options, [&](const RdcNode& leaf) {
+    if (points.empty()) points.push_back(leaf.sides[0].start);
+    for (const GeodesicPath& side : leaf.sides) points.push_back(side.end);
+  });
 }
 
 void CurveTracer::trace(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& polyline) {
   search_ = options.search;
   polyline.clear();
   if (options.scheme == Scheme::kRDC) {
-    std::vector<const RdcNode*> stack;
-    rdc_trace(rdc_root(polygon), 0, options, stack, polyline);
+    rdc_visit(rdc_root(polygon), 0, options, [&](const RdcNode& leaf) {
+      for (const GeodesicPath& side : leaf.sides) append_path(side, polyline);
+    });
     return;
   }
   subdivide(polygon, options, scratch_points_);
@@ -308,9 +285,10 @@ MeshPoint CurveTracer::eval(const ControlPolygon& polygon, double t, const Trace
     t0 = node.t0, t1 = node.t1;
   } else {
     std::array<MeshPoint, 4> points;
+    Sides sides;
     int level, interval;
-    olr_leaf(polygon, t, options, points, level, interval);
-    leaf = olr_bezier(points, level, interval);
+    olr_leaf(polygon, t, options, points, sides, level, interval);
+    leaf = olr_bezier(points, sides, level, interval);
     t0 = olr_knot(level, interval + 3), t1 = olr_knot(level, interval + 4);
   }
   // Direct de Casteljau on the (short) leaf polygon.
@@ -361,9 +339,10 @@ void CurveTracer::split(const ControlPolygon& polygon, double t, const TraceOpti
     return;
   }
   std::array<MeshPoint, 4> points;
+  Sides sides;
   int level, interval;
-  olr_leaf(polygon, t, options, points, level, interval);
-  split_leaf(polygon, olr_bezier(points, level, interval), olr_knot(level, interval + 3), olr_knot(level, interval + 4), t,
+  olr_leaf(polygon, t, options, points, sides, level, interval);
+  split_leaf(polygon, olr_bezier(points, sides, level, interval), olr_knot(level, interval + 3), olr_knot(level, interval + 4), t,
              left, right);
 }
 

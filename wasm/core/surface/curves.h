@@ -58,26 +58,33 @@ class CurveTracer {
   SearchGraph search_ = SearchGraph::kDual;
   MeshPoint average(const MeshPoint& a, const MeshPoint& b, double w);
 
+  using Sides = std::array<GeodesicPath, 3>;  // shortest paths between consecutive control points
+  bool flat(const Sides& sides, double angle);
+
   // RDC
   struct RdcNode {
-    std::array<GeodesicPath, 3> sides;
+    Sides sides;
     double t0 = 0, t1 = 1;
   };
   RdcNode rdc_root(const ControlPolygon& polygon);
   void rdc_split(const RdcNode& node, RdcNode& left, RdcNode& right);
-  bool rdc_flat(const RdcNode& node, double angle);
-  void rdc_trace(const RdcNode& node, int level, const TraceOptions& options, std::vector<const RdcNode*>& stack,
-                 std::vector<MeshPoint>& points);
+  bool rdc_stop(const RdcNode& node, int level, const TraceOptions& options);
+  // Calls leaf(node) on the leaves of the recursion, left to right.
+  template <class Leaf>
+  void rdc_visit(const RdcNode& node, int level, const TraceOptions& options, Leaf&& leaf);
   RdcNode rdc_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options);
 
   // OLR
+  Sides sides_of(const std::array<MeshPoint, 4>& points);
+  void olr_points(int level, int N, const MeshPoint* points, const GeodesicPath* sides, int offset, int first, int count,
+                  MeshPoint* out);
   void olr_refine(const std::vector<MeshPoint>& old_points, int level, std::vector<MeshPoint>& out);
+  bool olr_stop(const Sides& sides, int level, const TraceOptions& options);
   void olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options, std::array<MeshPoint, 4>& points,
-                int& level, int& interval);
+                Sides& sides, int& level, int& interval);
   void olr_adaptive(const std::array<MeshPoint, 4>& points, int level, int interval, const TraceOptions& options,
                     std::vector<MeshPoint>& out);
-  bool polygon_flat(const MeshPoint* points, int count, double angle);
-  ControlPolygon olr_bezier(const std::array<MeshPoint, 4>& points, int level, int interval);
+  ControlPolygon olr_bezier(const std::array<MeshPoint, 4>& points, const Sides& sides, int level, int interval);
 
   void append_path(const MeshPoint& a, const MeshPoint& b, std::vector<MeshPoint>& polyline);
   void append_path(const GeodesicPath& p, std::vector<MeshPoint>& polyline);

@@ -450,20 +450,21 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   path.lerps.clear();
   if (strip.size() == 1) return;
 
-  static thread_local UnfoldedStrip unfolded;
+  // The accepted strip (its unfolding and funnel) and the one being tried.
+  static thread_local UnfoldedStrip unfolded, trial_unfolded;
   static thread_local std::vector<Apex> apices, trial_apices;
-  static thread_local std::vector<int> frozen, trial, semi_star;
+  static thread_local std::vector<int> frozen, trial;
   frozen.clear();
 
-  auto solve = [&](const std::vector<int>& s, std::vector<Apex>& out) {
-    unfold_strip(mesh_, s, unfolded);
+  auto solve = [&](const std::vector<int>& s, UnfoldedStrip& u, std::vector<Apex>& out) {
+    unfold_strip(mesh_, s, u);
     MeshPoint pa, pb;
     point_in_face(mesh_, a, s.front(), pa);
     point_in_face(mesh_, b, s.back(), pb);
-    funnel(unfolded, unfolded.map(0, pa), unfolded.map(static_cast<int>(s.size()) - 1, pb), out);
+    funnel(u, u.map(0, pa), u.map(static_cast<int>(s.size()) - 1, pb), out);
     return polyline_length(out);
   };
-  double length = solve(strip, apices);
+  double length = solve(strip, unfolded, apices);
 
   // A run of strip faces around a reflex vertex and the other semi-star that replaces it.
   struct Flip {
@@ -541,17 +542,18 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     if (flips.empty()) continue;  // all frozen this pass; the next pass finds nothing new
     std::sort(flips.begin(), flips.end(), [](const Flip& x, const Flip& y) { return x.first < y.first; });
     apply(flips, trial);
-    double trial_length = solve(trial, trial_apices);
+    double trial_length = solve(trial, trial_unfolded, trial_apices);
     if (!(trial_length < length - 1e-12 * mesh_.scale) && flips.size() > 1) {
       // Together they did not shorten the path: fall back to the largest turn alone.
       const auto best = std::max_element(flips.begin(), flips.end(), [](const Flip& x, const Flip& y) { return x.turn < y.turn; });
       Flip single = *best;
       flips.assign(1, single);
       apply(flips, trial);
-      trial_length = solve(trial, trial_apices);
+      trial_length = solve(trial, trial_unfolded, trial_apices);
     }
     if (trial_length < length - 1e-12 * mesh_.scale) {
       strip.swap(trial);
+      std::swap(unfolded, trial_unfolded);
       apices.swap(trial_apices);
       length = trial_length;
       if (stats) stats->flips += static_cast<int>(flips.size());
@@ -561,7 +563,6 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     }
   }
   // Crossings of the final strip.
-  unfold_strip(mesh_, strip, unfolded);
   crossings(unfolded, apices, path.lerps);
   path.strip = strip;
   point_in_face(mesh_, a, strip.front(), path.start);

@@ -1,5 +1,5 @@
 import type { LoadedDocument } from '../../app/state.js';
-import { readJSON, writeJSON } from '../../app/autosave.js';
+import { DebouncedSave, readJSON, writeJSON } from '../../app/autosave.js';
 import type { Mode, ModeContext } from '../../app/modes.js';
 import type { ViewPointer } from '../../view2d/view2d.js';
 import { IDENTITY, apply, invert, isIdentity, sameMatrix } from './affine.js';
@@ -70,7 +70,7 @@ export class SkinMode implements Mode {
     if (s) s.setTime((s.time + dt) % s.spec.duration, { live: true });
   });
   private frame = 0;
-  private autosaveTimer = 0;
+  private readonly autosave = new DebouncedSave(AUTOSAVE_MS, () => this.saveNow());
   /** The control points were shown when the mode took over (hidden meanwhile, shown again after). */
   private overlayWasOn = false;
   /** The rig error this mode put in the status bar, if still there. */
@@ -79,7 +79,7 @@ export class SkinMode implements Mode {
   private sessionOff: (() => void)[] = [];
 
   constructor() {
-    window.addEventListener('pagehide', () => this.flushAutosave());
+    window.addEventListener('pagehide', () => this.autosave.flush());
   }
 
   // ---- Mode ------------------------------------------------------------------------------------
@@ -128,7 +128,7 @@ export class SkinMode implements Mode {
   deactivate(): void {
     const ctx = this.ctx;
     this.stopPlayback();
-    this.flushAutosave();
+    this.autosave.flush();
     this.detach();
     for (const off of this.off) off();
     this.off = [];
@@ -241,7 +241,7 @@ export class SkinMode implements Mode {
     if (current === this.current && this.session) return;
     const previous = this.session;
     this.stopPlayback();
-    this.flushAutosave();
+    this.autosave.flush();
     this.detach();
     this.current = current;
     if (previous && (!current || this.sessions.get(current) !== previous)) previous.suspend();
@@ -281,7 +281,7 @@ export class SkinMode implements Mode {
     this.sessionOff.push(
       s.events.on('spec', () => {
         this.refreshPanel();
-        this.scheduleAutosave();
+        this.autosave.schedule();
         this.requestDraw();
       }),
       s.events.on('posed', () => this.requestDraw()),
@@ -291,7 +291,7 @@ export class SkinMode implements Mode {
       }),
       s.events.on('time', () => {
         this.refreshTimeline();
-        this.scheduleAutosave();
+        this.autosave.schedule();
       }),
       s.events.on('rig', (status) => this.showStatus(status)),
     );
@@ -545,15 +545,7 @@ export class SkinMode implements Mode {
 
   // ---- autosave --------------------------------------------------------------------------------
 
-  private scheduleAutosave(): void {
-    window.clearTimeout(this.autosaveTimer);
-    this.autosaveTimer = window.setTimeout(() => this.flushAutosave(), AUTOSAVE_MS);
-  }
-
-  private flushAutosave(): void {
-    if (!this.autosaveTimer) return;
-    window.clearTimeout(this.autosaveTimer);
-    this.autosaveTimer = 0;
+  private saveNow(): void {
     const s = this.session, current = this.current;
     if (!s || !current) return;
     const problem = saveRig(current, s.spec, s.time);
@@ -601,7 +593,7 @@ export class SkinMode implements Mode {
     return skinTestState(this.viewState, {
       active: this.ctx !== null,
       layers: this.ui?.curves.counts ?? { target: 0, naive: 0, field: 0 },
-      saved: this.autosaveTimer === 0,
+      saved: !this.autosave.pending,
     });
   }
 

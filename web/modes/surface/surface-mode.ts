@@ -1,6 +1,6 @@
 import { Matrix4, Vector3 } from 'three';
 import type { MeshInfo, MeshPoint, SurfaceSplineJSON, TraceOptions } from '../../../src/index.js';
-import { contentHash } from '../../app/autosave.js';
+import { DebouncedSave, contentHash } from '../../app/autosave.js';
 import { download } from '../../app/download.js';
 import { fetchBytes, readFile } from '../../app/loader.js';
 import type { Mode, ModeContext } from '../../app/modes.js';
@@ -168,7 +168,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
   /** The last trace (one spline), or the last retrace of several together. */
   private lastTrace: { ms: number; points: number; count: number; sum: number } | null = null;
   private batch: { left: number; count: number; sum: number; points: number } | null = null;
-  private autosaveTimer = 0;
+  private readonly autosave = new DebouncedSave(AUTOSAVE_MS, () => this.saveNow());
   private frame = 0;
   private off: (() => void)[] = [];
   private sessionOff: (() => void)[] = [];
@@ -178,7 +178,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
 
   constructor() {
     this.statusEl = h('span', { class: 'surface-status' }, this.statusMesh, this.statusWarnings, this.statusTrace);
-    window.addEventListener('pagehide', () => this.flushAutosave());
+    window.addEventListener('pagehide', () => this.autosave.flush());
   }
 
   // ---- Mode ------------------------------------------------------------------------------------
@@ -236,7 +236,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
     this.cancelGesture();
     this.finish();
     this.placing = false;
-    this.flushAutosave();
+    this.autosave.flush();
     for (const off of this.off) off();
     this.off = [];
     cancelAnimationFrame(this.frame);
@@ -426,7 +426,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
     for (const off of this.sessionOff) off();
     this.sessionOff = [];
     this.cancelGesture();
-    this.flushAutosave();
+    this.autosave.flush();
     this.session = s;
     this.selection = null;
     this.drawingId = null;
@@ -444,7 +444,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
       this.sessionOff.push(
         s.events.on('drawing', () => {
           this.validateState();
-          this.scheduleAutosave();
+          this.autosave.schedule();
           this.ensureTraces();
           this.refreshPanel();
           this.requestDraw();
@@ -1449,15 +1449,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
 
   // ---- autosave --------------------------------------------------------------------------------
 
-  private scheduleAutosave(): void {
-    window.clearTimeout(this.autosaveTimer);
-    this.autosaveTimer = window.setTimeout(() => this.flushAutosave(), AUTOSAVE_MS);
-  }
-
-  private flushAutosave(): void {
-    if (!this.autosaveTimer) return;
-    window.clearTimeout(this.autosaveTimer);
-    this.autosaveTimer = 0;
+  private saveNow(): void {
     const s = this.session;
     if (!s) return;
     const problem = saveDrawing(s, s.drawing);
@@ -1504,7 +1496,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
       placing: this.placing,
       lastTraceMs: this.lastTrace?.ms ?? null,
       options: this.traceOptions(),
-      saved: this.autosaveTimer === 0,
+      saved: !this.autosave.pending,
     });
   }
 
