@@ -1,10 +1,10 @@
-import { existsSync, mkdirSync, readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
+import { readFileSync } from 'node:fs';
 import { init, parseSVG } from '../../dist/index.js';
 import { expect, test } from './fixtures.js';
 import {
   colorsInFile,
   countColors,
+  docsScreenshot,
   editorState,
   expectSameFingerprint,
   fingerprint,
@@ -56,13 +56,7 @@ test('opens with the first sample drawn, within budget', async ({ page }, testIn
   await expect(page.getByTestId('junction').getByRole('heading')).toHaveText('Junction 1');
   await frames(page);
   await page.screenshot({ path: testInfo.outputPath('editor-junction.png') });
-  // docs/editor.png is written when missing or on request (UPDATE_DOCS=1), so that test runs
-  // do not churn a committed image (its panel shows timings that differ run to run).
-  const docs = fileURLToPath(new URL('../../docs/', import.meta.url));
-  if (process.env.UPDATE_DOCS === '1' || !existsSync(`${docs}editor.png`)) {
-    mkdirSync(docs, { recursive: true });
-    await page.screenshot({ path: `${docs}editor.png` });
-  }
+  await docsScreenshot(page, 'editor.png');
 });
 
 test('opens an SVG from the shared data through the file input', async ({ page }, testInfo) => {

@@ -1,6 +1,6 @@
 import { expect, type Page } from '@playwright/test';
 import type {} from '../../web/app/test-hook.js'; // window.splinekitEditor's type
-import { readFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
 /** A file of the shared test data (../shared/data beside the repository). */
@@ -11,6 +11,17 @@ export function sharedData(relative: string): string {
 /** A file of the app's public/ folder. */
 export function publicFile(relative: string): string {
   return fileURLToPath(new URL(`../../public/${relative}`, import.meta.url));
+}
+
+/**
+ * Writes docs/<name> (the README's screenshots) when it is missing or on request (UPDATE_DOCS=1),
+ * so that test runs do not churn committed images (panels show timings that differ run to run).
+ */
+export async function docsScreenshot(page: Page, name: string): Promise<void> {
+  const docs = fileURLToPath(new URL('../../docs/', import.meta.url));
+  if (process.env.UPDATE_DOCS !== '1' && existsSync(`${docs}${name}`)) return;
+  mkdirSync(docs, { recursive: true });
+  await page.screenshot({ path: `${docs}${name}` });
 }
 
 export type EditorState = {

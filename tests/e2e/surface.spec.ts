@@ -1,7 +1,7 @@
-import { mkdirSync, readFileSync, statSync } from 'node:fs';
+import { readFileSync, statSync } from 'node:fs';
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.js';
-import { frames, openEditor, publicFile } from './helpers.js';
+import { docsScreenshot, frames, openEditor, publicFile } from './helpers.js';
 
 /**
  * Surface mode end to end: a sample mesh opens in the 3D view; four clicks on it draw a spline
@@ -189,9 +189,10 @@ test('Surface mode: draw a spline on a mesh, drag an anchor, undo and redo', asy
   expect(s.splines[0].polyline).toEqual(moved.polyline);
 
   await page.getByTestId('view3d').focus();
-  mkdirSync('docs', { recursive: true });
-  await page.screenshot({ path: 'docs/surface.png' });
-  expect(statSync('docs/surface.png').size).toBeLessThan(300_000);
+  const shot = test.info().outputPath('surface.png');
+  await page.screenshot({ path: shot });
+  expect(statSync(shot).size).toBeLessThan(300_000);
+  await docsScreenshot(page, 'surface.png');
 });
 
 test('Surface mode: move, turn and scale a spline, switch RDC/OLR and adaptive, insert and delete points', async ({ page }) => {
