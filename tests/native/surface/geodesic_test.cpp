@@ -107,6 +107,38 @@ TEST(ShortestPath, IsTheStraightSegmentOnAPlane) {
   }
 }
 
+// A path straightened through two known paths that meet at a corner c (a mesh vertex half of the
+// time, so the strip must go around it) is the straight segment, like the searched one; and on the
+// cube the corner between two faces' centres straightens to the unfolded diagonal.
+TEST(ShortestPath, StraightensThroughKnownPaths) {
+  const TriMesh mesh = testing::build(testing::planar_grid(24));
+  GeodesicSolver solver(mesh);
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 100; ++trial) {
+    const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
+    const MeshPoint c = trial % 2 ? vertex_point(mesh, static_cast<int>(rng() % mesh.positions.size())) : random_point(mesh, rng);
+    std::vector<GeodesicPath> pieces(2);
+    ASSERT_TRUE(solver.shortest_path(a, c, pieces[0]));
+    ASSERT_TRUE(solver.shortest_path(c, b, pieces[1]));
+    GeodesicPath path;
+    ASSERT_TRUE(solver.straighten_through(pieces, path)) << "trial " << trial;
+    EXPECT_NEAR(path_length(mesh, path), (eval_position(mesh, b) - eval_position(mesh, a)).norm(), 1e-9) << "trial " << trial;
+    for (size_t i = 0; i + 1 < path.strip.size(); ++i) EXPECT_GE(edge_to(mesh, path.strip[i], path.strip[i + 1]), 0);
+  }
+  const TriMesh cube = testing::build(testing::cube(4));
+  GeodesicSolver on_cube(cube);
+  std::vector<GeodesicPath> pieces(2);
+  // (0.5, 0.5, 0) -> corner (1, 1, 0) -> (1, 0.5, 0.5): unfolded, the two face centres are 1 apart.
+  ASSERT_TRUE(on_cube.shortest_path(vertex_at(cube, {0.5, 0.5, 0}), vertex_at(cube, {1, 1, 0}), pieces[0]));
+  ASSERT_TRUE(on_cube.shortest_path(vertex_at(cube, {1, 1, 0}), vertex_at(cube, {1, 0.5, 0.5}), pieces[1]));
+  GeodesicPath path;
+  ASSERT_TRUE(on_cube.straighten_through(pieces, path));
+  EXPECT_NEAR(path_length(cube, path), 1.0, 1e-9);
+  // Pieces that do not meet are refused.
+  std::swap(pieces[0], pieces[1]);
+  EXPECT_FALSE(on_cube.straighten_through(pieces, path));
+}
+
 TEST(ShortestPath, MatchesUnfoldingsOnACube) {
   const TriMesh mesh = testing::build(testing::cube(4));
   GeodesicSolver solver(mesh);

@@ -16,7 +16,7 @@ bool same_point(const TriMesh& mesh, const MeshPoint& a, const MeshPoint& b) {
 // OLR stencils: point i of level n+1 from the N points of level n (global indices). `avg(j, w)` is
 // A(P_j, P_{j+1}; w); `mix(x, y)` is A(x, y; 1/2).
 template <class Pt, class Avg, class Mix>
-MeshPoint olr_point(int level, int N, int i, Pt pt, Avg avg, Mix mix) {
+auto olr_point(int level, int N, int i, Pt pt, Avg avg, Mix mix) -> decltype(pt(0)) {
   const int M = 2 * N - 3;
   if (level == 0) {  // Bézier halves as a B-spline: P0, midpoints, P3
     if (i == 0) return pt(0);
@@ -68,6 +68,65 @@ GeodesicPath CurveTracer::path(const MeshPoint& a, const MeshPoint& b) {
   return p;
 }
 
+double CurveTracer::mean_face_area() {
+  if (mean_face_area_ < 0) {
+    const TriMesh& mesh = solver_.mesh();
+    double total = 0;
+    for (const auto& t : mesh.triangles)
+      total += (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm() / 2;
+    mean_face_area_ = mesh.triangles.empty() ? 0 : total / static_cast<double>(mesh.triangles.size());
+  }
+  return mean_face_area_;
+}
+
+// Straightening a strip through the pieces sweeps the path across the region between the pieces and
+// the geodesic, one vertex per flip: cheap when the pieces nearly line up (the polygons of deep levels,
+// short detours), expensive when they turn sharply around a far corner (the first levels of a large
+// control polygon), where the search finds a closer strip. The region is estimated by the fan of
+// triangles from the start over the points where pieces meet; kSeedFaces was chosen on random
+// whole-surface polygons of nefertiti and spot_loop2_369k (BENCHMARKS.md).
+GeodesicPath CurveTracer::seed_or_search(const std::vector<GeodesicPath>& pieces) {
+  constexpr double kSeedFaces = 64;
+  const TriMesh& mesh = solver_.mesh();
+  const MeshPoint& a = pieces.front().start;
+  const MeshPoint& b = pieces.back().end;
+  const Vec3 pa = eval_position(mesh, a);
+  double area = 0;
+  Vec3 prev = eval_position(mesh, pieces.front().end);
+  for (size_t k = 1; k < pieces.size(); ++k) {
+    const Vec3 next = eval_position(mesh, pieces[k].end);
+    area += (prev - pa).cross(next - pa).norm() / 2;
+    prev = next;
+  }
+  GeodesicPath p;
+  if (area <= kSeedFaces * mean_face_area() && solver_.straighten_through(pieces, p)) {
+    ++stats.seeded_paths;
+    return p;
+  }
+  return path(a, b);
+}
+
+GeodesicPath CurveTracer::path_between(const Located& x, const Located& y, const GeodesicPath* sides, int offset) {
+  if (x.side < 0 || y.side < 0) return path(x.point, y.point);
+  const TriMesh& mesh = solver_.mesh();
+  static thread_local std::vector<GeodesicPath> pieces;
+  pieces.clear();
+  if (!x.detour.strip.empty()) pieces.push_back(reversed(mesh, x.detour));
+  // Along the polygon's sides from x's place to y's (backwards when y comes first).
+  const bool forward = x.side < y.side || (x.side == y.side && x.w <= y.w);
+  const Located& lo = forward ? x : y;
+  const Located& hi = forward ? y : x;
+  const size_t first = pieces.size();
+  for (int j = lo.side; j <= hi.side; ++j)
+    pieces.push_back(sub_path(mesh, sides[j - offset], j == lo.side ? lo.w : 0, j == hi.side ? hi.w : 1));
+  if (!forward) {
+    std::reverse(pieces.begin() + first, pieces.end());
+    for (size_t k = first; k < pieces.size(); ++k) pieces[k] = reversed(mesh, pieces[k]);
+  }
+  if (!y.detour.strip.empty()) pieces.push_back(y.detour);
+  return seed_or_search(pieces);
+}
+
 MeshPoint CurveTracer::average(const MeshPoint& a, const MeshPoint& b, double w) {
   if (w <= 0) return a;
   if (w >= 1) return b;
@@ -96,12 +155,11 @@ CurveTracer::RdcNode CurveTracer::rdc_root(const ControlPolygon& polygon) {
 
 void CurveTracer::rdc_split(const RdcNode& node, RdcNode& left, RdcNode& right) {
   const TriMesh& mesh = solver_.mesh();
-  const MeshPoint q0 = eval_path(mesh, node.sides[0], 0.5);
-  const MeshPoint q1 = eval_path(mesh, node.sides[1], 0.5);
-  const MeshPoint q2 = eval_path(mesh, node.sides[2], 0.5);
-  const GeodesicPath q01 = path(q0, q1), q12 = path(q1, q2);
-  const MeshPoint r0 = eval_path(mesh, q01, 0.5), r1 = eval_path(mesh, q12, 0.5);
-  const GeodesicPath r01 = path(r0, r1);
+  // The midpoints q0, q1, q2 of the sides, then r0, r1 of the paths q0q1 and q1q2, then r0r1: each
+  // new path is seeded through the halves of the two it joins (they meet at a control point).
+  const GeodesicPath q01 = seed_or_search({sub_path(mesh, node.sides[0], 0.5, 1), sub_path(mesh, node.sides[1], 0, 0.5)});
+  const GeodesicPath q12 = seed_or_search({sub_path(mesh, node.sides[1], 0.5, 1), sub_path(mesh, node.sides[2], 0, 0.5)});
+  const GeodesicPath r01 = seed_or_search({sub_path(mesh, q01, 0.5, 1), sub_path(mesh, q12, 0, 0.5)});
   const double tm = 0.5 * (node.t0 + node.t1);
   left.sides = {sub_path(mesh, node.sides[0], 0, 0.5), sub_path(mesh, q01, 0, 0.5), sub_path(mesh, r01, 0, 0.5)};
   right.sides = {sub_path(mesh, r01, 0.5, 1), sub_path(mesh, q12, 0.5, 1), sub_path(mesh, node.sides[2], 0.5, 1)};
@@ -153,21 +211,42 @@ CurveTracer::Sides CurveTracer::sides_of(const std::array<MeshPoint, 4>& points)
 
 // Points first .. first+count-1 of level+1 from the level's points and the paths between them,
 // both indexed from global point `offset` (0 for a whole polygon, m for interval m's four points).
-void CurveTracer::olr_points(int level, int N, const MeshPoint* points, const GeodesicPath* sides, int offset, int first,
-                             int count, MeshPoint* out) {
+// The new points are located on those paths (their `side` is a global index).
+void CurveTracer::olr_points(int level, int N, const Located* points, const GeodesicPath* sides, int offset, int first,
+                             int count, Located* out) {
   const TriMesh& mesh = solver_.mesh();
-  auto pt = [&](int j) { return points[j - offset]; };
-  auto avg = [&](int j, double w) { return eval_path(mesh, sides[j - offset], w); };
-  auto mix = [&](const MeshPoint& x, const MeshPoint& y) { return average(x, y, 0.5); };
+  auto pt = [&](int j) {
+    return j + 1 < N ? Located{points[j - offset].point, j, 0, {}} : Located{points[j - offset].point, j - 1, 1, {}};
+  };
+  auto avg = [&](int j, double w) { return Located{eval_path(mesh, sides[j - offset], w), j, w, {}}; };
+  // The midpoint of the path between x and y, located from whichever of them comes first.
+  auto mix = [&](const Located& x, const Located& y) {
+    const GeodesicPath between = path_between(x, y, sides, offset);
+    const bool x_first = x.side < y.side || (x.side == y.side && x.w <= y.w);
+    Located m{eval_path(mesh, between, 0.5), x_first ? x.side : y.side, x_first ? x.w : y.w, {}};
+    m.detour = x_first ? sub_path(mesh, between, 0, 0.5) : reversed(mesh, sub_path(mesh, between, 0.5, 1));
+    return m;
+  };
   for (int i = 0; i < count; ++i) out[i] = olr_point(level, N, first + i, pt, avg, mix);
 }
 
-void CurveTracer::olr_refine(const std::vector<MeshPoint>& old_points, int level, std::vector<MeshPoint>& out) {
-  const int N = static_cast<int>(old_points.size());
-  std::vector<GeodesicPath> sides(N - 1);
-  for (int j = 0; j + 1 < N; ++j) sides[j] = path(old_points[j], old_points[j + 1]);
-  out.resize(2 * N - 3);
-  olr_points(level, N, old_points.data(), sides.data(), 0, 0, 2 * N - 3, out.data());
+void CurveTracer::olr_uniform(const ControlPolygon& polygon, int levels, std::vector<Located>& points,
+                              std::vector<GeodesicPath>& sides) {
+  points.clear();
+  for (const MeshPoint& p : polygon) points.push_back(unseeded(p));
+  sides.clear();
+  for (int j = 0; j < 3; ++j) sides.push_back(path(polygon[j], polygon[j + 1]));
+  std::vector<Located> next;
+  std::vector<GeodesicPath> next_sides;
+  for (int level = 0; level < levels; ++level) {
+    const int N = static_cast<int>(points.size());
+    next.resize(2 * N - 3);
+    olr_points(level, N, points.data(), sides.data(), 0, 0, 2 * N - 3, next.data());
+    next_sides.resize(next.size() - 1);
+    for (size_t i = 0; i + 1 < next.size(); ++i) next_sides[i] = path_between(next[i], next[i + 1], sides.data(), 0);
+    points.swap(next);
+    sides.swap(next_sides);
+  }
 }
 
 // Adaptive OLR stops at a node whose polygon is flat, never at the root (it is the Bézier polygon).
@@ -175,23 +254,26 @@ bool CurveTracer::olr_stop(const Sides& sides, int level, const TraceOptions& op
   return level >= options.max_levels || (level > 0 && flat(sides, options.angle));
 }
 
-void CurveTracer::olr_adaptive(const std::array<MeshPoint, 4>& points, int level, int interval,
-                               const TraceOptions& options, std::vector<MeshPoint>& out) {
-  const Sides sides = sides_of(points);
+void CurveTracer::olr_adaptive(const std::array<Located, 4>& points, const GeodesicPath* parent, int parent_offset,
+                               int level, int interval, const TraceOptions& options, std::vector<MeshPoint>& out) {
+  Sides sides;
+  for (int k = 0; k < 3; ++k)
+    sides[k] = parent ? path_between(points[k], points[k + 1], parent, parent_offset) : path(points[k].point, points[k + 1].point);
+  const int m = interval;
   if (olr_stop(sides, level, options)) {
     // A leaf adds its Bézier polygon (blossoms at its knots), so that neighbouring leaves of
     // different levels meet at a point of the curve with collinear handles. (§4.2.1 adds the
     // rightmost B-spline control point; across a change of level that point doubles back.)
-    const ControlPolygon bezier = olr_bezier(points, sides, level, interval);
+    const ControlPolygon bezier =
+        olr_bezier({points[0].point, points[1].point, points[2].point, points[3].point}, sides, level, m);
     out.insert(out.end(), bezier.begin() + (out.empty() ? 0 : 1), bezier.end());
     return;
   }
   // The five points of the two children (new indices 2m .. 2m+4).
-  const int m = interval;
-  std::array<MeshPoint, 5> next;
+  std::array<Located, 5> next;
   olr_points(level, (1 << level) + 3, points.data(), sides.data(), m, 2 * m, 5, next.data());
-  olr_adaptive({next[0], next[1], next[2], next[3]}, level + 1, 2 * m, options, out);
-  olr_adaptive({next[1], next[2], next[3], next[4]}, level + 1, 2 * m + 1, options, out);
+  olr_adaptive({next[0], next[1], next[2], next[3]}, sides.data(), m, level + 1, 2 * m, options, out);
+  olr_adaptive({next[1], next[2], next[3], next[4]}, sides.data(), m, level + 1, 2 * m + 1, options, out);
 }
 
 void CurveTracer::olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options,
@@ -203,9 +285,10 @@ void CurveTracer::olr_leaf(const ControlPolygon& polygon, double t, const TraceO
     if (options.adaptive ? olr_stop(sides, level, options) : level >= options.levels) return;
     const int m = interval;
     const int child = t <= std::ldexp(2.0 * m + 1, -(level + 1)) ? 0 : 1;
-    std::array<MeshPoint, 4> next;
-    olr_points(level, (1 << level) + 3, points.data(), sides.data(), m, 2 * m + child, 4, next.data());
-    points = next;
+    std::array<Located, 4> here, next;
+    for (int k = 0; k < 4; ++k) here[k] = unseeded(points[k]);
+    olr_points(level, (1 << level) + 3, here.data(), sides.data(), m, 2 * m + child, 4, next.data());
+    for (int k = 0; k < 4; ++k) points[k] = next[k].point;
     interval = 2 * m + child;
   }
 }
@@ -237,18 +320,17 @@ ControlPolygon CurveTracer::olr_bezier(const std::array<MeshPoint, 4>& points, c
 
 void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& points) {
   search_ = options.search;
-  points.assign(polygon.begin(), polygon.end());
+  points.clear();
   if (options.scheme == Scheme::kOLR) {
     if (options.adaptive) {
-      points.clear();
-      olr_adaptive(polygon, 0, 0, options, points);
+      olr_adaptive({unseeded(polygon[0]), unseeded(polygon[1]), unseeded(polygon[2]), unseeded(polygon[3])}, nullptr, 0, 0, 0,
+                   options, points);
       return;
     }
-    std::vector<MeshPoint> next;
-    for (int level = 0; level < options.levels; ++level) {
-      olr_refine(points, level, next);
-      points.swap(next);
-    }
+    std::vector<Located> located;
+    std::vector<GeodesicPath> sides;
+    olr_uniform(polygon, options.levels, located, sides);
+    for (const Located& p : located) points.push_back(p.point);
     return;
   }
   // The RDC polygon: the end points of every leaf's sides.
@@ -266,6 +348,13 @@ void CurveTracer::trace(const ControlPolygon& polygon, const TraceOptions& optio
     rdc_visit(rdc_root(polygon), 0, options, [&](const RdcNode& leaf) {
       for (const GeodesicPath& side : leaf.sides) append_path(side, polyline);
     });
+    return;
+  }
+  if (!options.adaptive) {  // the last level's sides are the curve
+    std::vector<Located> points;
+    std::vector<GeodesicPath> sides;
+    olr_uniform(polygon, options.levels, points, sides);
+    for (const GeodesicPath& side : sides) append_path(side, polyline);
     return;
   }
   subdivide(polygon, options, scratch_points_);

@@ -32,7 +32,8 @@ struct TraceOptions {
 using ControlPolygon = std::array<MeshPoint, 4>;
 
 struct TraceStats {
-  int shortest_paths = 0;
+  int shortest_paths = 0;  // searched (phase (i) on the graph)
+  int seeded_paths = 0;    // straightened through known paths instead
 };
 
 class CurveTracer {
@@ -74,16 +75,35 @@ class CurveTracer {
   void rdc_visit(const RdcNode& node, int level, const TraceOptions& options, Leaf&& leaf);
   RdcNode rdc_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options);
 
+  // Seeded paths. Every point a subdivision step makes lies on the previous polygon's shortest paths
+  // (at fraction w of side `side`) or on a path from such a point (`detour`, from there to the
+  // point). The path between two such points is first tried through those paths (a strip without a
+  // search, geodesic.h straighten_through), which is what makes deep levels cheap; the search is
+  // kept where the detour would sweep a large area (see seed_or_search).
+  struct Located {
+    MeshPoint point;
+    int side = -1;  // -1: not on a known polygon (the control points): searched
+    double w = 0;
+    GeodesicPath detour;
+  };
+  static Located unseeded(const MeshPoint& p) { return {p, -1, 0, {}}; }
+  // The path from x to y; `sides` are the polygon's sides that x.side and y.side index (from `offset`).
+  GeodesicPath path_between(const Located& x, const Located& y, const GeodesicPath* sides, int offset);
+  GeodesicPath seed_or_search(const std::vector<GeodesicPath>& pieces);
+  double mean_face_area();
+
   // OLR
   Sides sides_of(const std::array<MeshPoint, 4>& points);
-  void olr_points(int level, int N, const MeshPoint* points, const GeodesicPath* sides, int offset, int first, int count,
-                  MeshPoint* out);
-  void olr_refine(const std::vector<MeshPoint>& old_points, int level, std::vector<MeshPoint>& out);
+  void olr_points(int level, int N, const Located* points, const GeodesicPath* sides, int offset, int first, int count,
+                  Located* out);
+  // The polygon after `levels` uniform steps and the shortest paths between its points.
+  void olr_uniform(const ControlPolygon& polygon, int levels, std::vector<Located>& points, std::vector<GeodesicPath>& sides);
   bool olr_stop(const Sides& sides, int level, const TraceOptions& options);
   void olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options, std::array<MeshPoint, 4>& points,
                 Sides& sides, int& level, int& interval);
-  void olr_adaptive(const std::array<MeshPoint, 4>& points, int level, int interval, const TraceOptions& options,
-                    std::vector<MeshPoint>& out);
+  // `parent` (when not null): the sides of the polygon `points` were made from, indexed from parent_offset.
+  void olr_adaptive(const std::array<Located, 4>& points, const GeodesicPath* parent, int parent_offset, int level,
+                    int interval, const TraceOptions& options, std::vector<MeshPoint>& out);
   ControlPolygon olr_bezier(const std::array<MeshPoint, 4>& points, const Sides& sides, int level, int interval);
 
   void append_path(const MeshPoint& a, const MeshPoint& b, std::vector<MeshPoint>& polyline);
@@ -92,6 +112,7 @@ class CurveTracer {
                   ControlPolygon& left, ControlPolygon& right);
 
   GeodesicSolver& solver_;
+  double mean_face_area_ = -1;
   std::vector<MeshPoint> scratch_points_;
 };
 

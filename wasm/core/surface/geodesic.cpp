@@ -54,6 +54,14 @@ class RingDeque {
 
 bool contains_vertex(const TriMesh& mesh, int face, int v) { return corner_of(mesh, face, v) >= 0; }
 
+// The angle of `face` at its vertex v.
+double corner_angle(const TriMesh& mesh, int face, int v) {
+  const auto& t = mesh.triangles[face];
+  const int k = corner_of(mesh, face, v);
+  const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[v], b = mesh.positions[t[(k + 2) % 3]] - mesh.positions[v];
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
 // Faces that contain a point: its face, the neighbour across the edge it lies on, or its vertex's fan.
 void faces_of_point(const TriMesh& mesh, const MeshPoint& p, std::vector<int>& faces) {
   faces.clear();
@@ -192,6 +200,7 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
   static thread_local std::vector<float> heuristic;
   if (cache.size() < dist_.size()) cache.resize(dist_.size()), heuristic.resize(dist_.size());
 
+  const double weight = dual ? options_.dual_heuristic_weight : 1.0;
   static thread_local RingDeque queue;
   queue.clear();
   double key_sum = 0;  // sum of (dist + heuristic) over queued nodes, for LLL
@@ -201,7 +210,7 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
     touched_.push_back(node);
     const Vec3 p = node_position(node);
     cache[node] = p.cast<float>();
-    heuristic[node] = static_cast<float>((p - pb).norm());
+    heuristic[node] = static_cast<float>(weight * (p - pb).norm());
   };
   auto key = [&](int node) { return dist_[node] + heuristic[node]; };
   // Relaxes `node` from `from`; SLF puts improved nodes at the front or the back of the deque.
@@ -491,16 +500,16 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     const bool run_forward = first < last && mesh_.adjacency[f0][(k0 + 2) % 3] == strip[first + 1];
     flip.first = first, flip.last = last;
     flip.other.clear();
-    double angle_sum = corner_angle(f0, v);
+    double angle_sum = corner_angle(mesh_, f0, v);
     for (int f = f0, steps = 0; steps < 4096; ++steps) {
       const int k = corner_of(mesh_, f, v);
       f = run_forward ? mesh_.adjacency[f][k] : mesh_.adjacency[f][(k + 2) % 3];
       if (f < 0) return false;
-      angle_sum += corner_angle(f, v);
+      angle_sum += corner_angle(mesh_, f, v);
       if (f == strip[last]) break;
       flip.other.push_back(f);
     }
-    for (int i = first + 1; i < last; ++i) angle_sum += corner_angle(strip[i], v);
+    for (int i = first + 1; i < last; ++i) angle_sum += corner_angle(mesh_, strip[i], v);
     constexpr double kPi = 3.14159265358979323846;
     return angle_sum - kPi - flip.turn < kPi - 1e-9;
   };
@@ -569,13 +578,6 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   point_in_face(mesh_, b, strip.back(), path.end);
 }
 
-double GeodesicSolver::corner_angle(int face, int v) const {
-  const auto& t = mesh_.triangles[face];
-  const int k = corner_of(mesh_, face, v);
-  const Vec3 a = mesh_.positions[t[(k + 1) % 3]] - mesh_.positions[v], b = mesh_.positions[t[(k + 2) % 3]] - mesh_.positions[v];
-  return std::atan2(a.cross(b).norm(), a.dot(b));
-}
-
 bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats,
                                    SearchGraph graph) {
   static thread_local std::vector<int> strip;
@@ -584,6 +586,62 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     return false;
   }
   straighten(a, b, strip, path, stats);
+  return true;
+}
+
+namespace {
+
+// Appends to `strip` (ending at a face that holds p) the faces from there to `face`, which also holds
+// p: nothing when it is the same face, `face` when adjacent, else the way around p's vertex that
+// spans the smaller angle (the other way the path would wrap around the vertex's far side, which on
+// a cone such as a cube's corner straightens into a different, longer geodesic).
+bool walk_to(const TriMesh& mesh, const MeshPoint& p, int face, std::vector<int>& strip) {
+  const int from = strip.back();
+  if (from == face) return true;
+  if (edge_to(mesh, from, face) >= 0) {
+    strip.push_back(face);
+    return true;
+  }
+  MeshPoint on_from;
+  if (!point_in_face(mesh, p, from, on_from)) return false;
+  const PointLocation where = locate(mesh, on_from);
+  if (where.kind != PointLocation::kVertex) return false;
+  static thread_local std::vector<int> fan;
+  bool closed;
+  vertex_fan(mesh, where.index, fan, closed);
+  const int n = static_cast<int>(fan.size());
+  const int i = static_cast<int>(std::find(fan.begin(), fan.end(), from) - fan.begin());
+  const int j = static_cast<int>(std::find(fan.begin(), fan.end(), face) - fan.begin());
+  if (i == n || j == n) return false;
+  // Forward (i -> j in fan order) or backward; an open fan cannot wrap around.
+  const int forward = (j - i + n) % n, backward = (i - j + n) % n;
+  auto angle = [&](int step, int count) {  // corner angles at the vertex of the faces strictly between
+    double sum = 0;
+    for (int s = 1; s < count; ++s) sum += corner_angle(mesh, fan[((i + step * s) % n + n) % n], where.index);
+    return sum;
+  };
+  const bool go_forward = closed ? angle(1, forward) <= angle(-1, backward) : j > i;
+  const int steps = go_forward ? forward : backward;
+  for (int s = 1; s <= steps; ++s) strip.push_back(fan[((go_forward ? i + s : i - s) % n + n) % n]);
+  return true;
+}
+
+}  // namespace
+
+bool GeodesicSolver::straighten_through(const std::vector<GeodesicPath>& pieces, GeodesicPath& path, PathStats* stats) {
+  static thread_local std::vector<int> strip;
+  strip.clear();
+  for (const GeodesicPath& piece : pieces) {
+    if (piece.strip.empty()) return false;
+    if (strip.empty()) {
+      strip.push_back(piece.strip.front());
+    } else if (!walk_to(mesh_, piece.start, piece.strip.front(), strip)) {
+      return false;
+    }
+    strip.insert(strip.end(), piece.strip.begin() + 1, piece.strip.end());
+  }
+  remove_loops(strip, parent_);
+  straighten(pieces.front().start, pieces.back().end, strip, path, stats);
   return true;
 }
 

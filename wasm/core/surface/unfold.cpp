@@ -57,8 +57,13 @@ void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedSt
     auto& c = out.corners[i + 1];
     c[ka] = pa;
     c[kb] = pb;
-    // g winds (b, a, c): c is left of b -> a.
-    c[kc] = place_left(pb, pa, length(b, tg[kc]), length(a, tg[kc]));
+    // g winds (b, a, c): c is left of b -> a. Its coordinates along and across edge b -> a, as
+    // multiples of the edge (the unfolded edge has the same length as in space).
+    const Vec3 e = mesh.positions[a] - mesh.positions[b], w = mesh.positions[tg[kc]] - mesh.positions[b];
+    const double e2 = e.squaredNorm();
+    const Vec2 edge = pa - pb;
+    c[kc] = e2 > 0 ? Vec2(pb + (w.dot(e) / e2) * edge + (w.cross(e).norm() / e2) * Vec2(-edge.y(), edge.x()))
+                   : place_left(pb, pa, length(b, tg[kc]), length(a, tg[kc]));
   }
 }
 
