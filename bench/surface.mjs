@@ -397,7 +397,7 @@ bench/native/surface_bench.cpp (g++ -O3, one thread): random source vertices, ea
 target vertices; ${s.meshes[0].geodesics.sources} sources per mesh, ${bigSourceCount(s)} on ${big.join(', ') || 'none'} (one exact solve there: ${bigExact(s)}). Exact distances
 from tests/native/reference/exact_geodesic.h (MMP windows with saddle pseudo-sources) on the same
 repaired mesh. Ratio = path length / exact distance. "Refined" is GeodesicSolver::shortest_path with
-its default search graph (3 Steiner nodes per edge, A* bound drained); "dual" is SearchGraph::kDual,
+its default search graph (4 Steiner nodes per edge, A* bound drained); "dual" is SearchGraph::kDual,
 the paper's dual graph (face nodes, first arrival), which curve tracing uses. Both are then
 straightened (funnel + flips). "Shorter than exact" counts paths of both graphs shorter than the exact
 distance by more than 1e-9 relative (must be 0).

@@ -124,7 +124,9 @@ GeodesicPath CurveTracer::path_between(const Located& x, const Located& y, const
     for (size_t k = first; k < pieces.size(); ++k) pieces[k] = reversed(mesh, pieces[k]);
   }
   if (!y.detour.strip.empty()) pieces.push_back(y.detour);
-  return seed_or_search(pieces);
+  GeodesicPath p = seed_or_search(pieces);
+  pieces.clear();  // (their strips are not kept alive between traces)
+  return p;
 }
 
 MeshPoint CurveTracer::average(const MeshPoint& a, const MeshPoint& b, double w) {
