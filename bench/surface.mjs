@@ -7,6 +7,7 @@ import { readFileSync, readdirSync, statSync } from 'node:fs';
 import os from 'node:os';
 import { join } from 'node:path';
 import { SurfaceMesh, SurfaceSpline, randomMeshPoints, traceBezier } from '../dist/index.js';
+import { mulberry32 as generator } from '../dist/core/random.js';
 
 const randomPoints = randomMeshPoints; // the same polygons as `splinekit trace --random`
 

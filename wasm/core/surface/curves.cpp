@@ -113,7 +113,7 @@ GeodesicPath CurveTracer::path_between(const Located& x, const Located& y, const
   pieces.clear();
   if (!x.detour.strip.empty()) pieces.push_back(reversed(mesh, x.detour));
   // Along the polygon's sides from x's place to y's (backwards when y comes first).
-  const bool forward = x.side < y.side || (x.side == y.side && x.w <= y.w);
+  const bool forward = !comes_before(y, x);
   const Located& lo = forward ? x : y;
   const Located& hi = forward ? y : x;
   const size_t first = pieces.size();
@@ -224,7 +224,7 @@ void CurveTracer::olr_points(int level, int N, const Located* points, const Geod
   // The midpoint of the path between x and y, located from whichever of them comes first.
   auto mix = [&](const Located& x, const Located& y) {
     const GeodesicPath between = path_between(x, y, sides, offset);
-    const bool x_first = x.side < y.side || (x.side == y.side && x.w <= y.w);
+    const bool x_first = !comes_before(y, x);
     Located m{eval_path(mesh, between, 0.5), x_first ? x.side : y.side, x_first ? x.w : y.w, {}};
     m.detour = x_first ? sub_path(mesh, between, 0, 0.5) : reversed(mesh, sub_path(mesh, between, 0.5, 1));
     return m;

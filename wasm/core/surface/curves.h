@@ -87,6 +87,8 @@ class CurveTracer {
     GeodesicPath detour;
   };
   static Located unseeded(const MeshPoint& p) { return {p, -1, 0, {}}; }
+  // Whether x's place on the polygon comes strictly before y's.
+  static bool comes_before(const Located& x, const Located& y) { return x.side < y.side || (x.side == y.side && x.w < y.w); }
   // The path from x to y; `sides` are the polygon's sides that x.side and y.side index (from `offset`).
   GeodesicPath path_between(const Located& x, const Located& y, const GeodesicPath* sides, int offset);
   GeodesicPath seed_or_search(const std::vector<GeodesicPath>& pieces);
