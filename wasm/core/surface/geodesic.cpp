@@ -132,16 +132,12 @@ GeodesicSolver::GeodesicSolver(const TriMesh& mesh, const ShortestPathOptions& o
     graph_.edge_offsets.assign(1, 0);
     for (int c : counts) graph_.edge_offsets.push_back(graph_.edge_offsets.back() + c);
   }
-  const size_t nodes = graph_.nodes();
-  dist_.assign(nodes, std::numeric_limits<float>::infinity());
-  parent_.assign(nodes, -1);
-  state_.assign(nodes, 0);
+  slot_.assign(graph_.nodes(), -1);
 }
 
 size_t GeodesicSolver::bytes() const {
   return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.edge_offsets.capacity()) * sizeof(int) +
-         dist_.capacity() * sizeof(float) + parent_.capacity() * sizeof(int) + state_.capacity() +
-         touched_.capacity() * sizeof(int);
+         slot_.capacity() * sizeof(int) + visits_.capacity() * sizeof(Visit);
 }
 
 // Position of graph node `node`: a face centroid, or a point along an edge.
@@ -195,49 +191,48 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
   }
   const Vec3 pa = eval_position(mesh_, a);
   const Vec3 pb = eval_position(mesh_, b);
-  // Positions and heuristics of the touched nodes (a node is looked at many times).
-  static thread_local std::vector<Eigen::Vector3f> cache;
-  static thread_local std::vector<float> heuristic;
-  if (cache.size() < dist_.size()) cache.resize(dist_.size()), heuristic.resize(dist_.size());
-
   const double weight = dual ? options_.dual_heuristic_weight : 1.0;
   static thread_local RingDeque queue;
   queue.clear();
+  visits_.clear();
   double key_sum = 0;  // sum of (dist + heuristic) over queued nodes, for LLL
-  auto touch = [&](int node) {
-    if (state_[node] != 0) return;
-    state_[node] = 2;
-    touched_.push_back(node);
-    const Vec3 p = node_position(node);
-    cache[node] = p.cast<float>();
-    heuristic[node] = static_cast<float>(weight * (p - pb).norm());
+  // The record of a node (made on first touch: its position is looked at many times).
+  auto visit = [&](int node) -> Visit& {
+    int& slot = slot_[node];
+    if (slot < 0) {
+      const Vec3 p = node_position(node);
+      slot = static_cast<int>(visits_.size());
+      visits_.push_back({std::numeric_limits<float>::infinity(), static_cast<float>(weight * (p - pb).norm()), node, -1,
+                         p.cast<float>(), false});
+    }
+    return visits_[slot];
   };
-  auto key = [&](int node) { return dist_[node] + heuristic[node]; };
+  auto key = [&](const Visit& v) { return v.dist + v.heuristic; };
   // Relaxes `node` from `from`; SLF puts improved nodes at the front or the back of the deque.
   auto relax = [&](int node, int from, float d) {
-    touch(node);
-    if (d >= dist_[node]) return;
-    if (state_[node] == 1) {
-      key_sum -= dist_[node] - d;
+    Visit& v = visit(node);
+    if (d >= v.dist) return;
+    if (v.queued) {
+      key_sum -= v.dist - d;
     } else {
-      key_sum += d + heuristic[node];
-      state_[node] = 1;
-      if (!queue.empty() && d + heuristic[node] < key(queue.front()))
-        queue.push_front(node);
+      key_sum += d + v.heuristic;
+      v.queued = true;
+      if (!queue.empty() && d + v.heuristic < key(visits_[queue.front()]))
+        queue.push_front(slot_[node]);
       else
-        queue.push_back(node);
+        queue.push_back(slot_[node]);
     }
-    dist_[node] = d;
-    parent_[node] = from;
+    v.dist = d;
+    v.parent = from;
   };
   // The nodes of face f: its centroid and the nodes on its edges (but those on `skip_edge`).
-  auto for_face_nodes = [&](int f, int skip_edge, auto&& visit) {
-    visit(f);
+  auto for_face_nodes = [&](int f, int skip_edge, auto&& each) {
+    each(f);
     if (dual) return;
     for (int k = 0; k < 3; ++k) {
       const int e = graph_.halfedge_edge[3 * f + k];
       if (e == skip_edge) continue;
-      for (int n = graph_.first_node(e), end = graph_.end_node(e); n < end; ++n) visit(n);
+      for (int n = graph_.first_node(e), end = graph_.end_node(e); n < end; ++n) each(n);
     }
   };
   auto is_target = [&](int f) { return std::find(targets.begin(), targets.end(), f) != targets.end(); };
@@ -246,54 +241,45 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
   float best = std::numeric_limits<float>::infinity();
 
   for (int s : sources)
-    for_face_nodes(s, -1, [&](int node) {
-      touch(node);
-      relax(node, -1, static_cast<float>((cache[node].cast<double>() - pa).norm()));
-    });
+    for_face_nodes(s, -1, [&](int node) { relax(node, -1, static_cast<float>((visit(node).position.cast<double>() - pa).norm())); });
 
   int visited = 0;
   while (!queue.empty()) {
-    // LLL: nodes whose key exceeds the queue's mean go to the back.
+    // LLL: nodes whose key exceeds the queue's mean go to the back (the deque holds records).
     const double mean = key_sum / static_cast<double>(queue.size());
     for (size_t moves = 0; moves < queue.size(); ++moves) {
-      const int f = queue.front();
-      if (key(f) <= mean) break;
+      const int r = queue.front();
+      if (key(visits_[r]) <= mean) break;
       queue.pop_front();
-      queue.push_back(f);
+      queue.push_back(r);
     }
-    const int u = queue.pop_front();
-    state_[u] = 2;
-    key_sum -= key(u);
+    const int r = queue.pop_front();
+    visits_[r].queued = false;
+    key_sum -= key(visits_[r]);
     // A* bound: a node whose key reaches the best arrival cannot improve it (the deque is not a
     // priority queue, so the search drains it instead of stopping at the first such node).
-    if (key(u) >= best) {
+    if (key(visits_[r]) >= best) {
       if (dual) break;
       continue;
     }
     ++visited;
-    const float du = dist_[u];
-    const Eigen::Vector3f pu = cache[u];
+    // (copies: visit() may grow visits_)
+    const int u = visits_[r].node;
+    const float du = visits_[r].dist, hu = visits_[r].heuristic;
+    const Eigen::Vector3f pu = visits_[r].position;
+    auto arrive = [&](int f) {
+      if (is_target(f) && du + hu < best) best = du + hu, best_node = u, best_face = f;
+    };
     auto expand_face = [&](int f, int skip_edge) {
-      if (is_target(f)) {
-        const float total = du + heuristic[u];
-        if (total < best) best = total, best_node = u, best_face = f;
-      }
+      arrive(f);
       for_face_nodes(f, skip_edge, [&](int node) {
-        if (node == u) return;
-        touch(node);
-        relax(node, u, du + (cache[node] - pu).norm());
+        if (node != u) relax(node, u, du + (visit(node).position - pu).norm());
       });
     };
     if (dual) {
-      if (is_target(u)) {
-        const float total = du + heuristic[u];
-        if (total < best) best = total, best_node = u, best_face = u;
-      }
-      for (int g : mesh_.adjacency[u]) {
-        if (g < 0) continue;
-        touch(g);
-        relax(g, u, du + (cache[g] - pu).norm());
-      }
+      arrive(u);
+      for (int g : mesh_.adjacency[u])
+        if (g >= 0) relax(g, u, du + (visit(g).position - pu).norm());
     } else if (u < nf) {
       expand_face(u, -1);
     } else {
@@ -306,10 +292,11 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
   }
   if (stats) stats->visited_nodes += visited;
 
+  auto parent = [&](int node) { return visits_[slot_[node]].parent; };
   if (best_face >= 0) {
     // Walk back: face nodes contribute their face, links the face they run through.
     strip.push_back(best_face);
-    for (int node = best_node; node >= 0; node = parent_[node]) {
+    for (int node = best_node; node >= 0; node = parent(node)) {
       if (node < nf) {
         strip.push_back(node);
       } else {
@@ -317,7 +304,7 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
         node_faces(mesh_, graph_, node, faces);
         const int f = strip.back();
         // An edge node between the face after it and the face before it in the strip.
-        const int before = parent_[node] >= 0 ? link_face(node, parent_[node]) : -1;
+        const int before = parent(node) >= 0 ? link_face(node, parent(node)) : -1;
         if (faces[0] != f && faces[1] != f) strip.push_back(faces[0] == before ? faces[1] : faces[0]);
         if (before >= 0) strip.push_back(before);
       }
@@ -325,7 +312,7 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
     // The first node was linked to the source point through a source face.
     {
       int first = best_node;
-      while (first >= 0 && parent_[first] >= 0) first = parent_[first];
+      while (first >= 0 && parent(first) >= 0) first = parent(first);
       int faces[2];
       if (first >= nf) {
         node_faces(mesh_, graph_, first, faces);
@@ -336,15 +323,12 @@ bool GeodesicSolver::initial_strip(const MeshPoint& a, const MeshPoint& b, std::
     std::reverse(strip.begin(), strip.end());
     strip.erase(std::unique(strip.begin(), strip.end()), strip.end());
   }
-  for (int node : touched_) {
-    dist_[node] = std::numeric_limits<float>::infinity();
-    parent_[node] = -1;
-    state_[node] = 0;
-  }
-  touched_.clear();
+  for (const Visit& v : visits_) slot_[v.node] = -1;
+  visits_.clear();
+  // A long refined search can touch most of the graph; its records are not kept beyond 2 MB.
+  if (visits_.capacity() > (size_t{1} << 16)) visits_ = std::vector<Visit>();
   if (best_face < 0) return false;
-  // parent_ doubles as the loop-removal slot table (all -1 again after the reset above).
-  remove_loops(strip, parent_);
+  remove_loops(strip, slot_);
   return true;
 }
 
@@ -522,7 +506,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       at = f.last;
     }
     out.insert(out.end(), strip.begin() + at, strip.end());
-    remove_loops(out, parent_);
+    remove_loops(out, slot_);
   };
 
   for (int pass = 0; options_.straighten && pass < options_.max_flips; ++pass) {
@@ -640,7 +624,7 @@ bool GeodesicSolver::straighten_through(const std::vector<GeodesicPath>& pieces,
     }
     strip.insert(strip.end(), piece.strip.begin() + 1, piece.strip.end());
   }
-  remove_loops(strip, parent_);
+  remove_loops(strip, slot_);
   straighten(pieces.front().start, pieces.back().end, strip, path, stats);
   return true;
 }

@@ -107,11 +107,17 @@ class GeodesicSolver {
   const TriMesh& mesh_;
   ShortestPathOptions options_;
   DualGraph graph_;
-  // Search scratch, reused between queries (only touched entries are reset).
-  std::vector<float> dist_;
-  std::vector<int> parent_;       // node
-  std::vector<uint8_t> state_;    // 0 untouched, 1 in queue, 2 touched
-  std::vector<int> touched_;
+  // Search scratch, reused between queries. Only the nodes a search touches get a record, so the
+  // per-node cost is one int (slot_: the node's record, -1 when untouched; also the loop-removal
+  // table of strips, -1 everywhere between uses).
+  struct Visit {
+    float dist, heuristic;        // from the source; A* term to the target
+    int node, parent;             // parent: a node, -1 at the source
+    Eigen::Vector3f position;
+    bool queued;
+  };
+  std::vector<int> slot_;
+  std::vector<Visit> visits_;
 };
 
 // ---- Paths --------------------------------------------------------------------------------------
