@@ -228,8 +228,9 @@ void CurveTracer::olr_points(int level, int N, const Located* points, const Geod
   auto mix = [&](const Located& x, const Located& y) {
     const GeodesicPath between = path_between(x, y, sides, offset);
     const bool x_first = !comes_before(y, x);
-    Located m{eval_path(mesh, between, 0.5), x_first ? x.side : y.side, x_first ? x.w : y.w, {}};
+    Located m{{}, x_first ? x.side : y.side, x_first ? x.w : y.w, {}};
     m.detour = x_first ? sub_path(mesh, between, 0, 0.5) : reversed(mesh, sub_path(mesh, between, 0.5, 1));
+    m.point = m.detour.end;  // the midpoint
     return m;
   };
   for (int i = 0; i < count; ++i) out[i] = olr_point(level, N, first + i, pt, avg, mix);
@@ -239,8 +240,8 @@ void CurveTracer::olr_uniform(const ControlPolygon& polygon, int levels, std::ve
                               std::vector<GeodesicPath>& sides) {
   points.clear();
   for (const MeshPoint& p : polygon) points.push_back(unseeded(p));
-  sides.clear();
-  for (int j = 0; j < 3; ++j) sides.push_back(path(polygon[j], polygon[j + 1]));
+  const Sides first = sides_of(polygon);
+  sides.assign(first.begin(), first.end());
   std::vector<Located> next;
   std::vector<GeodesicPath> next_sides;
   for (int level = 0; level < levels; ++level) {
@@ -261,9 +262,8 @@ bool CurveTracer::olr_stop(const Sides& sides, int level, const TraceOptions& op
 
 void CurveTracer::olr_adaptive(const std::array<Located, 4>& points, const GeodesicPath* parent, int parent_offset,
                                int level, int interval, const TraceOptions& options, std::vector<MeshPoint>& out) {
-  Sides sides;
-  for (int k = 0; k < 3; ++k)
-    sides[k] = parent ? path_between(points[k], points[k + 1], parent, parent_offset) : path(points[k].point, points[k + 1].point);
+  Sides sides;  // (the root's points are unseeded: searched)
+  for (int k = 0; k < 3; ++k) sides[k] = path_between(points[k], points[k + 1], parent, parent_offset);
   const int m = interval;
   if (olr_stop(sides, level, options)) {
     // A leaf adds its Bézier polygon (blossoms at its knots), so that neighbouring leaves of

@@ -103,7 +103,8 @@ class CurveTracer {
   bool olr_stop(const Sides& sides, int level, const TraceOptions& options);
   void olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options, std::array<MeshPoint, 4>& points,
                 Sides& sides, int& level, int& interval);
-  // `parent` (when not null): the sides of the polygon `points` were made from, indexed from parent_offset.
+  // `parent`: the sides of the polygon `points` were made from, indexed from parent_offset (null for
+  // the root, whose points are unseeded).
   void olr_adaptive(const std::array<Located, 4>& points, const GeodesicPath* parent, int parent_offset, int level,
                     int interval, const TraceOptions& options, std::vector<MeshPoint>& out);
   ControlPolygon olr_bezier(const std::array<MeshPoint, 4>& points, const Sides& sides, int level, int interval);
