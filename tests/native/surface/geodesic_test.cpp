@@ -139,6 +139,42 @@ TEST(ShortestPath, StraightensThroughKnownPaths) {
   EXPECT_FALSE(on_cube.straighten_through(pieces, path));
 }
 
+// A strip that runs just under a row of collinear vertices while both ends lie just above it: the
+// funnel path runs along the row, bent where the strip crosses it. Flipping one vertex at a time
+// takes one flip per row vertex (19 here); the chain flip moves the strip across the whole
+// blocking stretch of the row at once. The result is the straight segment either way.
+TEST(ShortestPath, FlipsAZipperOfCollinearVerticesAtOnce) {
+  constexpr int n = 24;
+  const TriMesh mesh = testing::build(testing::planar_grid(n, 1, 0));
+  GeodesicSolver solver(mesh);
+  auto at = [&](double x, double y) {  // the mesh point at (x, y, 0)
+    for (int f = 0; f < static_cast<int>(mesh.triangles.size()); ++f) {
+      const auto& t = mesh.triangles[f];
+      const Vec3 p0 = mesh.positions[t[0]], e1 = mesh.positions[t[1]] - p0, e2 = mesh.positions[t[2]] - p0;
+      const double det = e1.x() * e2.y() - e1.y() * e2.x();
+      const double u = ((x - p0.x()) * e2.y() - (y - p0.y()) * e2.x()) / det;
+      const double v = (e1.x() * (y - p0.y()) - e1.y() * (x - p0.x())) / det;
+      if (u >= 0 && v >= 0 && u + v <= 1) return MeshPoint{f, Vec2(u, v)};
+    }
+    ADD_FAILURE() << "no face at " << x << ", " << y;
+    return MeshPoint{};
+  };
+  const double cell = 1.0 / n, row = 12 * cell;
+  // a and b just above the row; the strip goes down to just under it, along it, and back up.
+  const MeshPoint a = at(0.1, row + 0.3 * cell), b = at(0.9, row + 0.3 * cell);
+  const MeshPoint c = at(0.15, row - 0.3 * cell), d = at(0.85, row - 0.3 * cell);
+  std::vector<GeodesicPath> pieces(3);
+  ASSERT_TRUE(solver.shortest_path(a, c, pieces[0]));
+  ASSERT_TRUE(solver.shortest_path(c, d, pieces[1]));
+  ASSERT_TRUE(solver.shortest_path(d, b, pieces[2]));
+  GeodesicPath path;
+  PathStats stats;
+  ASSERT_TRUE(solver.straighten_through(pieces, path, &stats));
+  EXPECT_NEAR(path_length(mesh, path), 0.8, 1e-9);
+  EXPECT_LE(stats.flips, 4);
+  EXPECT_EQ(stats.frozen, 0);
+}
+
 TEST(ShortestPath, MatchesUnfoldingsOnACube) {
   const TriMesh mesh = testing::build(testing::cube(4));
   GeodesicSolver solver(mesh);

@@ -133,11 +133,12 @@ GeodesicSolver::GeodesicSolver(const TriMesh& mesh, const ShortestPathOptions& o
     for (int c : counts) graph_.edge_offsets.push_back(graph_.edge_offsets.back() + c);
   }
   slot_.assign(graph_.nodes(), -1);
+  angle_sums_.assign(mesh.positions.size(), std::numeric_limits<double>::quiet_NaN());
 }
 
 size_t GeodesicSolver::bytes() const {
   return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.edge_offsets.capacity()) * sizeof(int) +
-         slot_.capacity() * sizeof(int) + visits_.capacity() * sizeof(Visit);
+         slot_.capacity() * sizeof(int) + visits_.capacity() * sizeof(Visit) + angle_sums_.capacity() * sizeof(double);
 }
 
 // Position of graph node `node`: a face centroid, or a point along an edge.
@@ -464,6 +465,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     int first, last, vertex;
     double turn;
     std::vector<int> other;
+    bool chain = false;
   };
   static thread_local std::vector<Flip> flips;
   static thread_local std::vector<std::pair<double, size_t>> order;
@@ -484,18 +486,97 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     const bool run_forward = first < last && mesh_.adjacency[f0][(k0 + 2) % 3] == strip[first + 1];
     flip.first = first, flip.last = last;
     flip.other.clear();
-    double angle_sum = corner_angle(mesh_, f0, v);
     for (int f = f0, steps = 0; steps < 4096; ++steps) {
       const int k = corner_of(mesh_, f, v);
       f = run_forward ? mesh_.adjacency[f][k] : mesh_.adjacency[f][(k + 2) % 3];
       if (f < 0) return false;
-      angle_sum += corner_angle(mesh_, f, v);
       if (f == strip[last]) break;
       flip.other.push_back(f);
     }
-    for (int i = first + 1; i < last; ++i) angle_sum += corner_angle(mesh_, strip[i], v);
+    double& angle_sum = angle_sums_[v];  // the whole fan: the run and the other side
+    if (std::isnan(angle_sum)) {
+      angle_sum = 0;
+      for (int i = first; i <= last; ++i) angle_sum += corner_angle(mesh_, strip[i], v);
+      for (int f : flip.other) angle_sum += corner_angle(mesh_, f, v);
+    }
     constexpr double kPi = 3.14159265358979323846;
     return angle_sum - kPi - flip.turn < kPi - 1e-9;
+  };
+  // Zippers. A path that runs along a line of mesh vertices on the wrong side of it bends at one of
+  // them, v; flipping v alone moves the bend to the next vertex of the line, one pass per vertex.
+  // So the flip of apex j takes in the strip's boundary vertices next to v, on v's side and between
+  // the neighbouring apices, that would still block the path with v out of the way (they lie on v's
+  // side of the chord between the neighbouring apices), and replaces the strip faces around all of
+  // them by the faces on their other side. The pass keeps it only if the path gets shorter;
+  // otherwise v gets the single flip from then on (`no_chain`).
+  static thread_local std::vector<int> no_chain, pivots, before;
+  no_chain.clear();
+  auto extend_chain = [&](size_t j, Flip& flip) {
+    const int v = apices[j].vertex, n = static_cast<int>(strip.size());
+    if (n < 3 || std::find(no_chain.begin(), no_chain.end(), v) != no_chain.end()) return;
+    const Portal& own = unfolded.portals[std::clamp(apices[j].portal, 0, n - 2)];
+    const bool left = own.left_vertex == v;
+    if (!left && own.right_vertex != v) return;
+    auto side_vertex = [&](int i) { return left ? unfolded.portals[i].left_vertex : unfolded.portals[i].right_vertex; };
+    const Vec2 &from = apices[j - 1].pos, &to = apices[j + 1].pos;
+    const bool v_right = orient(from, to, apices[j].pos) < 0;
+    auto blocks = [&](int i) {  // the side vertex of portal i
+      const double o = orient(from, to, left ? unfolded.portals[i].left : unfolded.portals[i].right);
+      return v_right ? o < 0 : o > 0;
+    };
+    int first = flip.first, last = flip.last;
+    pivots.clear();
+    before.clear();
+    for (int i = first - 1; i > apices[j - 1].portal && blocks(i);) {  // vertices before v, nearest first
+      const int c = side_vertex(i);
+      while (i > apices[j - 1].portal + 1 && side_vertex(i - 1) == c) --i;
+      before.push_back(c);
+      first = i--;
+    }
+    pivots.assign(before.rbegin(), before.rend());
+    pivots.push_back(v);
+    for (int i = last; i < std::min(n - 1, apices[j + 1].portal) && blocks(i);) {  // vertices after v
+      const int c = side_vertex(i);
+      while (i + 1 < n - 1 && side_vertex(i + 1) == c) ++i;
+      pivots.push_back(c);
+      last = ++i;
+    }
+    if (pivots.size() == 1) return;
+    // Around each pivot in turn on the side away from the strip, from strip[first] to strip[last].
+    // `entry`: the other end of the edge the walk came through (the edge not to cross back over).
+    auto around = [&](int f, int pivot, int entry, int& next_entry) {
+      const auto& t = mesh_.triangles[f];
+      const int k = corner_of(mesh_, f, pivot);
+      if (t[(k + 1) % 3] != entry) return next_entry = t[(k + 1) % 3], mesh_.adjacency[f][k];
+      return next_entry = t[(k + 2) % 3], mesh_.adjacency[f][(k + 2) % 3];
+    };
+    const int p0 = pivots[0];
+    int entry = pivots[1];
+    if (contains_vertex(mesh_, strip[first + 1], p0)) {
+      const Portal& shared = unfolded.portals[first];
+      entry = shared.left_vertex == p0 ? shared.right_vertex : shared.left_vertex;
+    }
+    std::vector<int> other;
+    size_t at = 0;
+    int f = around(strip[first], p0, entry, entry);
+    for (int steps = 0;; ++steps) {
+      if (f < 0 || steps > 256) return;
+      if (at + 1 == pivots.size()) {
+        if (f == strip[last]) break;
+      } else if (f == strip[last]) {
+        return;
+      } else if (contains_vertex(mesh_, f, pivots[at + 1])) {
+        other.push_back(f);
+        f = around(f, pivots[at + 1], pivots[at], entry);
+        ++at;
+        continue;
+      }
+      other.push_back(f);
+      f = around(f, pivots[at], entry, entry);
+    }
+    flip.first = first, flip.last = last;
+    flip.other.swap(other);
+    flip.chain = true;
   };
   auto apply = [&](const std::vector<Flip>& chosen, std::vector<int>& out) {
     out.clear();
@@ -527,6 +608,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         if (stats) ++stats->frozen;
         continue;
       }
+      extend_chain(j, flip);
       const bool overlaps = std::any_of(flips.begin(), flips.end(), [&](const Flip& f) {
         return flip.first <= f.last + 1 && f.first <= flip.last + 1;
       });
@@ -551,8 +633,14 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       length = trial_length;
       if (stats) stats->flips += static_cast<int>(flips.size());
     } else {
-      for (const Flip& f : flips) frozen.push_back(f.vertex);
-      if (stats) stats->frozen += static_cast<int>(flips.size());
+      for (const Flip& f : flips) {
+        if (f.chain) {
+          no_chain.push_back(f.vertex);
+        } else {
+          frozen.push_back(f.vertex);
+          if (stats) ++stats->frozen;
+        }
+      }
     }
   }
   // Crossings of the final strip.

@@ -118,6 +118,8 @@ class GeodesicSolver {
   };
   std::vector<int> slot_;
   std::vector<Visit> visits_;
+  // Angle sum around each vertex, filled in when phase (iii) first needs it (NaN until then).
+  std::vector<double> angle_sums_;
 };
 
 // ---- Paths --------------------------------------------------------------------------------------
