@@ -364,8 +364,9 @@ the native tests check (tests/native/surface/validity_test.cpp, 10 polygons per 
 ### Per-curve trace time (OLR, uniform, 5 levels)
 
 Per-curve ms as reported by traceBezier (the wasm work, timed inside the module), after 10 warm-up
-curves. Random: 4 control points uniform over the whole surface (the paper's protocol; the first 100
-are the polygons of the validity table). Moderate: 4
+curves. Random: 4 control points uniform over the surface's area, anywhere on it (the first 100 are
+the polygons of the validity table; b/Surf §6.1 instead casts rays along the view direction, which
+on spot_loop2_369k gave slower curves, 12.9 against 8.5 ms median on 2026-12-01). Moderate: 4
 control points at the ends of straightest geodesics from a random centre, in random directions, of
 random lengths up to 5% of the bounding-box diagonal. Budget: median ≤ 5 ms, p99 ≤ 50 ms (ratio > 1 =
 over budget).

@@ -7,7 +7,9 @@
 //         shortest path inside it;
 //   (iii) the strip is straightened (after Xin & Wang): the reflex vertex with the largest turn has its
 //         semi-star in the strip replaced by its other semi-star; if the path does not get shorter the
-//         vertex is frozen; repeat until no reflex vertex is left unfrozen.
+//         vertex is frozen; repeat until no reflex vertex is left unfrozen. Each pass flips every
+//         reflex vertex whose run does not touch another's, and a flip takes in the neighbouring
+//         boundary vertices that would still block the path (a "zipper", flipped at once).
 // A path is its strip of faces and the intercepts (lerps) on the edges between consecutive faces.
 #pragma once
 
