@@ -509,7 +509,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   // side of the chord between the neighbouring apices), and replaces the strip faces around all of
   // them by the faces on their other side. The pass keeps it only if the path gets shorter;
   // otherwise v gets the single flip from then on (`no_chain`).
-  static thread_local std::vector<int> no_chain, pivots, before;
+  static thread_local std::vector<int> no_chain, pivots;
   no_chain.clear();
   auto extend_chain = [&](size_t j, Flip& flip) {
     const int v = apices[j].vertex, n = static_cast<int>(strip.size());
@@ -526,14 +526,13 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     };
     int first = flip.first, last = flip.last;
     pivots.clear();
-    before.clear();
     for (int i = first - 1; i > apices[j - 1].portal && blocks(i);) {  // vertices before v, nearest first
       const int c = side_vertex(i);
       while (i > apices[j - 1].portal + 1 && side_vertex(i - 1) == c) --i;
-      before.push_back(c);
+      pivots.push_back(c);
       first = i--;
     }
-    pivots.assign(before.rbegin(), before.rend());
+    std::reverse(pivots.begin(), pivots.end());  // in strip order
     pivots.push_back(v);
     for (int i = last; i < std::min(n - 1, apices[j + 1].portal) && blocks(i);) {  // vertices after v
       const int c = side_vertex(i);
