@@ -147,18 +147,7 @@ TEST(ShortestPath, FlipsAZipperOfCollinearVerticesAtOnce) {
   constexpr int n = 24;
   const TriMesh mesh = testing::build(testing::planar_grid(n, 1, 0));
   GeodesicSolver solver(mesh);
-  auto at = [&](double x, double y) {  // the mesh point at (x, y, 0)
-    for (int f = 0; f < static_cast<int>(mesh.triangles.size()); ++f) {
-      const auto& t = mesh.triangles[f];
-      const Vec3 p0 = mesh.positions[t[0]], e1 = mesh.positions[t[1]] - p0, e2 = mesh.positions[t[2]] - p0;
-      const double det = e1.x() * e2.y() - e1.y() * e2.x();
-      const double u = ((x - p0.x()) * e2.y() - (y - p0.y()) * e2.x()) / det;
-      const double v = (e1.x() * (y - p0.y()) - e1.y() * (x - p0.x())) / det;
-      if (u >= 0 && v >= 0 && u + v <= 1) return MeshPoint{f, Vec2(u, v)};
-    }
-    ADD_FAILURE() << "no face at " << x << ", " << y;
-    return MeshPoint{};
-  };
+  auto at = [&](double x, double y) { return testing::point_at(mesh, Vec3(x, y, 0)); };
   const double cell = 1.0 / n, row = 12 * cell;
   // a and b just above the row; the strip goes down to just under it, along it, and back up.
   const MeshPoint a = at(0.1, row + 0.3 * cell), b = at(0.9, row + 0.3 * cell);
@@ -172,6 +161,26 @@ TEST(ShortestPath, FlipsAZipperOfCollinearVerticesAtOnce) {
   ASSERT_TRUE(solver.straighten_through(pieces, path, &stats));
   EXPECT_NEAR(path_length(mesh, path), 0.8, 1e-9);
   EXPECT_LE(stats.flips, 4);
+  EXPECT_EQ(stats.frozen, 0);
+}
+
+TEST(ShortestPath, CrossesManyRowsAlongAChord) {
+  // A strip that dips far below the segment between its ends. Semi-star flips bring the path up one
+  // row of vertices at a time (82 flips); a chord moves it to the line between the neighbouring
+  // apices in one go.
+  constexpr int n = 24;
+  const TriMesh mesh = testing::build(testing::planar_grid(n, 1, 0));
+  GeodesicSolver solver(mesh);
+  auto at = [&](double x, double y) { return testing::point_at(mesh, Vec3(x, y, 0)); };
+  const MeshPoint a = at(0.1, 0.8), b = at(0.9, 0.8), c = at(0.5, 0.13);
+  std::vector<GeodesicPath> pieces(2);
+  ASSERT_TRUE(solver.shortest_path(a, c, pieces[0]));
+  ASSERT_TRUE(solver.shortest_path(c, b, pieces[1]));
+  GeodesicPath path;
+  PathStats stats;
+  ASSERT_TRUE(solver.straighten_through(pieces, path, &stats));
+  EXPECT_NEAR(path_length(mesh, path), 0.8, 1e-9);
+  EXPECT_LE(stats.flips, 30);
   EXPECT_EQ(stats.frozen, 0);
 }
 

@@ -133,20 +133,23 @@ GeodesicSolver::GeodesicSolver(const TriMesh& mesh, const ShortestPathOptions& o
     for (int c : counts) graph_.edge_offsets.push_back(graph_.edge_offsets.back() + c);
   }
   slot_.assign(graph_.nodes(), -1);
+  centroids_.resize(nf);
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = mesh.triangles[f];
+    centroids_[f] = ((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3).cast<float>();
+  }
   angle_sums_.assign(mesh.positions.size(), std::numeric_limits<double>::quiet_NaN());
 }
 
 size_t GeodesicSolver::bytes() const {
   return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.edge_offsets.capacity()) * sizeof(int) +
-         slot_.capacity() * sizeof(int) + visits_.capacity() * sizeof(Visit) + angle_sums_.capacity() * sizeof(double);
+         slot_.capacity() * sizeof(int) + visits_.capacity() * sizeof(Visit) + centroids_.capacity() * sizeof(centroids_[0]) +
+         angle_sums_.capacity() * sizeof(double);
 }
 
 // Position of graph node `node`: a face centroid, or a point along an edge.
 Vec3 GeodesicSolver::node_position(int node) const {
-  if (node < graph_.faces) {
-    const auto& t = mesh_.triangles[node];
-    return (mesh_.positions[t[0]] + mesh_.positions[t[1]] + mesh_.positions[t[2]]) / 3;
-  }
+  if (node < graph_.faces) return centroids_[node].cast<double>();
   const int e = graph_.edge_of_node(node);
   const int first = graph_.first_node(e), count = graph_.end_node(e) - first;
   const int h = graph_.edge_halfedge[e];
@@ -443,44 +446,55 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   point_in_face(mesh_, b, strip.back(), path.end);
   path.lerps.clear();
   if (strip.size() == 1) return;
+  // Flips keep the strip's first and last faces, so the end points stay where they are.
+  const MeshPoint start = path.start, end = path.end;
 
-  // The accepted strip (its unfolding and funnel) and the one being tried.
+  // The strip, its unfolding and its funnel path, and the strip being tried with theirs.
   static thread_local UnfoldedStrip unfolded, trial_unfolded;
   static thread_local std::vector<Apex> apices, trial_apices;
   static thread_local std::vector<int> frozen, trial;
   frozen.clear();
-
   auto solve = [&](const std::vector<int>& s, UnfoldedStrip& u, std::vector<Apex>& out) {
-    unfold_strip(mesh_, s, u);
-    MeshPoint pa, pb;
-    point_in_face(mesh_, a, s.front(), pa);
-    point_in_face(mesh_, b, s.back(), pb);
-    funnel(u, u.map(0, pa), u.map(static_cast<int>(s.size()) - 1, pb), out);
+    unfold_strip(mesh_, s, u, &s == &strip ? nullptr : &unfolded);  // a trial keeps the strip's start
+    funnel(u, u.map(0, start), u.map(static_cast<int>(s.size()) - 1, end), out);
     return polyline_length(out);
   };
   double length = solve(strip, unfolded, apices);
+  auto strip_size = [&]() { return static_cast<int>(strip.size()); };
 
-  // A run of strip faces around a reflex vertex and the other semi-star that replaces it.
+  // The faces of the strip around vertex v, from the face at index `at`.
+  auto run_of = [&](int v, int at, int& first, int& last) {
+    first = last = std::clamp(at, 0, strip_size() - 1);
+    if (!contains_vertex(mesh_, strip[first], v)) return false;
+    while (first > 0 && contains_vertex(mesh_, strip[first - 1], v)) --first;
+    while (last + 1 < strip_size() && contains_vertex(mesh_, strip[last + 1], v)) ++last;
+    return true;
+  };
+  // Whether the strip holds apex vertex v on its left.
+  auto on_left = [&](const Apex& x) {
+    return unfolded.portals[std::clamp(x.portal, 0, static_cast<int>(unfolded.portals.size()) - 1)].left_vertex == x.vertex;
+  };
+
+  // A change of the strip at apex j: strip[first + 1 .. last - 1] becomes `other`.
   struct Flip {
     int first, last, vertex;
     double turn;
     std::vector<int> other;
-    bool chain = false;
+    bool chain = false, chord = false;
   };
   static thread_local std::vector<Flip> flips;
-  static thread_local std::vector<std::pair<double, size_t>> order;
-  // Builds the flip of apex j, or returns false (and freezes the vertex) when the path cannot be
+  size_t used = 0;  // the first `used` flips are this pass's
+
+  // Phase (iii)'s flip of apex j, or false (and the vertex is frozen) when the path cannot be
   // shortened there: the other side of v is open (a boundary) or spans at least π, i.e. the angle
   // sum θ satisfies θ − (π + turn) ≥ π (the path through v is then locally shortest).
   auto make_flip = [&](size_t j, Flip& flip) {
     const int v = apices[j].vertex;
     flip.vertex = v;
     flip.turn = turn_at(apices, j);
-    int first = std::clamp(apices[j].portal, 0, static_cast<int>(strip.size()) - 1);
-    if (!contains_vertex(mesh_, strip[first], v)) return false;
-    int last = first;
-    while (first > 0 && contains_vertex(mesh_, strip[first - 1], v)) --first;
-    while (last + 1 < static_cast<int>(strip.size()) && contains_vertex(mesh_, strip[last + 1], v)) ++last;
+    flip.chain = flip.chord = false;
+    int first, last;
+    if (!run_of(v, apices[j].portal, first, last)) return false;
     const int f0 = strip[first];
     const int k0 = corner_of(mesh_, f0, v);
     const bool run_forward = first < last && mesh_.adjacency[f0][(k0 + 2) % 3] == strip[first + 1];
@@ -577,52 +591,168 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     flip.other.swap(other);
     flip.chain = true;
   };
-  auto apply = [&](const std::vector<Flip>& chosen, std::vector<int>& out) {
+  // Chords. A long path first found on the dual graph lies rows of vertices away from the geodesic,
+  // and semi-star flips move it across one row at a time. So the flip of apex j rather takes the
+  // straight line from the neighbouring apex p to the other one, q, in the plane of the strip, and
+  // follows it across the mesh from p, laying each face it enters flat (a straightest geodesic from
+  // p aimed at q), until a face holds q. Where the surface between turned the line, it aims once
+  // more at where those faces put q. The strip then runs around p from its faces there to the line,
+  // along the line, and around q (on the side the line passes it) to its faces there. When the line
+  // meets a boundary or a vertex, misses q, or its faces put q too far for the path to get shorter,
+  // the flip is the semi-star (and zipper) instead; so it is from then on for a vertex whose chord
+  // did not shorten the path.
+  static thread_local std::vector<int> no_chord;
+  no_chord.clear();
+  auto make_chord = [&](size_t j, Flip& flip) {
+    const int n = strip_size();
+    const Apex &p = apices[j - 1], &q = apices[j + 1];
+    const Vec2 o = p.pos;
+    Vec2 d = q.pos - p.pos;
+    auto side = [&](const Vec2& c) { return cross2(d, c - o); };  // > 0: left of the line
+    static thread_local std::vector<int> other;
+    int first = 0, f = strip[0];
+    int on_strip = 0;  // strip index of f while the walk follows the strip (its layout is known), else -1
+    std::array<Vec2, 3> cf, cg;
+    auto step = [&](int e) {  // into the face across edge e of f
+      const int g = mesh_.adjacency[f][e];
+      if (g < 0) return false;
+      if (on_strip >= 0 && on_strip + 1 < n && strip[on_strip + 1] == g) {
+        cf = unfolded.corners[++on_strip];
+      } else {
+        on_strip = -1;
+        lay_across(mesh_, f, e, cf, cg);
+        cf = cg;
+      }
+      f = g;
+      other.push_back(f);
+      return true;
+    };
+    // From p along direction d until a face holds q (the end face for the end point); q's place there.
+    Vec2 at;
+    auto trace = [&]() {
+      other.clear();
+      first = 0, f = strip[0], on_strip = 0;
+      cf = unfolded.corners[0];
+      if (p.vertex >= 0) {  // around p, on from its first strip face, to the face whose corner holds the line
+        int run_last;
+        if (!run_of(p.vertex, p.portal, first, run_last)) return false;
+        const bool left = on_left(p);
+        f = strip[first];
+        cf = unfolded.corners[first];
+        on_strip = first;
+        for (int steps = 0;; ++steps) {
+          const int k = corner_of(mesh_, f, p.vertex);
+          if (side(cf[(k + 1) % 3]) < 0 && side(cf[(k + 2) % 3]) > 0) break;
+          if (steps > 64 || !step(left ? (k + 2) % 3 : k) || f == strip[first]) return false;
+        }
+      }
+      // Along the line: it leaves each face through the edge from a corner on its right to one on
+      // its left.
+      const double reach = 1.05 * d.squaredNorm();
+      for (int steps = 0; q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip.back(); ++steps) {
+        const double sides[3] = {side(cf[0]), side(cf[1]), side(cf[2])};
+        int e = -1;
+        for (int k = 0; k < 3; ++k)
+          if (sides[k] < 0 && sides[(k + 1) % 3] > 0) e = k;
+        if (e < 0 || steps > 4 * n) return false;
+        if ((cf[e] - o).dot(d) > reach && (cf[(e + 1) % 3] - o).dot(d) > reach) return false;  // past q
+        if (!step(e)) return false;
+      }
+      at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)]
+                         : (1 - end.uv.x() - end.uv.y()) * cf[0] + end.uv.x() * cf[1] + end.uv.y() * cf[2];
+      return true;
+    };
+    if (!trace()) return false;
+    // The surface between turned the line: aim again where the line's faces put q.
+    if (std::abs(cross2(d, at - o)) > 1e-3 * d.squaredNorm()) {
+      d = at - o;
+      if (!trace()) return false;
+    }
+    // The path from p to q through the line's faces is at least |at - o| long, so the chord cannot
+    // help unless that beats the way by v.
+    if ((at - o).norm() >= (apices[j].pos - p.pos).norm() + (q.pos - apices[j].pos).norm()) return false;
+    int last = n - 1;
+    if (q.vertex >= 0) {  // around q, on the side the line passes it, to its strip faces
+      int run_first, run_last;
+      if (!run_of(q.vertex, q.portal, run_first, run_last)) return false;
+      const bool left = side(at) > 0;
+      for (int steps = 0;; ++steps) {
+        int m = run_first;
+        while (m <= run_last && strip[m] != f) ++m;
+        if (m <= run_last) {
+          last = m;
+          break;
+        }
+        const int k = corner_of(mesh_, f, q.vertex);
+        if (steps > 64 || !step(left ? (k + 2) % 3 : k)) return false;
+      }
+    }
+    if (!other.empty() && other.back() == strip[last]) other.pop_back();
+    if (last <= first) return false;
+    flip.first = first, flip.last = last;
+    flip.other.assign(other.begin(), other.end());
+    flip.chord = true;
+    return true;
+  };
+
+  // The strip with `chosen` made (in strip order).
+  auto apply = [&](const std::vector<const Flip*>& chosen, std::vector<int>& out) {
     out.clear();
     int at = 0;
-    for (const Flip& f : chosen) {  // in strip order
-      out.insert(out.end(), strip.begin() + at, strip.begin() + f.first + 1);
-      out.insert(out.end(), f.other.begin(), f.other.end());
-      at = f.last;
+    for (const Flip* f : chosen) {
+      out.insert(out.end(), strip.begin() + at, strip.begin() + f->first + 1);
+      out.insert(out.end(), f->other.begin(), f->other.end());
+      at = f->last;
     }
     out.insert(out.end(), strip.begin() + at, strip.end());
     remove_loops(out, slot_);
   };
 
+  static thread_local std::vector<std::pair<double, size_t>> order;
+  static thread_local std::vector<const Flip*> chosen;
+  auto is_frozen = [&](int v) { return std::find(frozen.begin(), frozen.end(), v) != frozen.end(); };
   for (int pass = 0; options_.straighten && pass < options_.max_flips; ++pass) {
     // Every removable reflex vertex, largest turn first, with runs that do not touch each other.
     order.clear();
     for (size_t j = 1; j + 1 < apices.size(); ++j) {
-      if (apices[j].vertex < 0 || std::find(frozen.begin(), frozen.end(), apices[j].vertex) != frozen.end()) continue;
+      if (apices[j].vertex < 0 || is_frozen(apices[j].vertex)) continue;
       const double turn = turn_at(apices, j);
       if (turn > 1e-9) order.emplace_back(-turn, j);
     }
     if (order.empty()) break;
     std::sort(order.begin(), order.end());
-    flips.clear();
+    used = 0;
+    auto overlaps = [&](int first, int last) {
+      return std::any_of(flips.begin(), flips.begin() + used, [&](const Flip& f) { return first <= f.last + 1 && f.first <= last + 1; });
+    };
     for (const auto& [neg_turn, j] : order) {
-      Flip flip;
+      if (used == flips.size()) flips.emplace_back();
+      Flip& flip = flips[used];
       if (!make_flip(j, flip)) {
         frozen.push_back(apices[j].vertex);
         if (stats) ++stats->frozen;
         continue;
       }
-      extend_chain(j, flip);
-      const bool overlaps = std::any_of(flips.begin(), flips.end(), [&](const Flip& f) {
-        return flip.first <= f.last + 1 && f.first <= flip.last + 1;
-      });
-      if (!overlaps) flips.push_back(std::move(flip));
+      // A chord spans the faces around the neighbouring apices: look for room before tracing it.
+      int lo = 0, hi = strip_size() - 1, unused;
+      const bool room = (apices[j - 1].vertex < 0 || run_of(apices[j - 1].vertex, apices[j - 1].portal, lo, unused)) &&
+                        (apices[j + 1].vertex < 0 || run_of(apices[j + 1].vertex, apices[j + 1].portal, unused, hi)) &&
+                        !overlaps(lo, hi);
+      if (!room || std::find(no_chord.begin(), no_chord.end(), flip.vertex) != no_chord.end() || !make_chord(j, flip))
+        extend_chain(j, flip);
+      if (!overlaps(flip.first, flip.last)) ++used;
     }
-    if (flips.empty()) continue;  // all frozen this pass; the next pass finds nothing new
-    std::sort(flips.begin(), flips.end(), [](const Flip& x, const Flip& y) { return x.first < y.first; });
-    apply(flips, trial);
+    if (used == 0) continue;  // all frozen this pass; the next pass finds nothing new
+    chosen.clear();
+    for (size_t i = 0; i < used; ++i) chosen.push_back(&flips[i]);
+    std::sort(chosen.begin(), chosen.end(), [](const Flip* x, const Flip* y) { return x->first < y->first; });
+    apply(chosen, trial);
     double trial_length = solve(trial, trial_unfolded, trial_apices);
-    if (!(trial_length < length - 1e-12 * mesh_.scale) && flips.size() > 1) {
+    if (!(trial_length < length - 1e-12 * mesh_.scale) && chosen.size() > 1) {
       // Together they did not shorten the path: fall back to the largest turn alone.
-      const auto best = std::max_element(flips.begin(), flips.end(), [](const Flip& x, const Flip& y) { return x.turn < y.turn; });
-      Flip single = *best;
-      flips.assign(1, single);
-      apply(flips, trial);
+      const Flip* best = *std::max_element(chosen.begin(), chosen.end(), [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
+      chosen.assign(1, best);
+      apply(chosen, trial);
       trial_length = solve(trial, trial_unfolded, trial_apices);
     }
     if (trial_length < length - 1e-12 * mesh_.scale) {
@@ -630,13 +760,15 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       std::swap(unfolded, trial_unfolded);
       apices.swap(trial_apices);
       length = trial_length;
-      if (stats) stats->flips += static_cast<int>(flips.size());
+      if (stats) stats->flips += static_cast<int>(chosen.size());
     } else {
-      for (const Flip& f : flips) {
-        if (f.chain) {
-          no_chain.push_back(f.vertex);
+      for (const Flip* f : chosen) {
+        if (f->chord) {
+          no_chord.push_back(f->vertex);
+        } else if (f->chain) {
+          no_chain.push_back(f->vertex);
         } else {
-          frozen.push_back(f.vertex);
+          frozen.push_back(f->vertex);
           if (stats) ++stats->frozen;
         }
       }
@@ -645,8 +777,6 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   // Crossings of the final strip.
   crossings(unfolded, apices, path.lerps);
   path.strip = strip;
-  point_in_face(mesh_, a, strip.front(), path.start);
-  point_in_face(mesh_, b, strip.back(), path.end);
 }
 
 bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats,
@@ -780,24 +910,27 @@ double path_length(const TriMesh& mesh, const GeodesicPath& path) {
 
 namespace {
 
-// Locates arc-length fraction t: segment j (between points j and j+1, on face strip[j]) and the
-// fraction within it.
-void locate_fraction(const TriMesh& mesh, const GeodesicPath& path, double t, size_t& segment, double& alpha) {
+// The arc length of a path at each of its points (start, crossings, end).
+void arc_lengths(const TriMesh& mesh, const GeodesicPath& path, std::vector<double>& at) {
   static thread_local std::vector<Vec3> positions;
   path_positions(mesh, path, positions);
-  const size_t segments = positions.size() - 1;
-  double total = 0;
-  for (size_t j = 0; j < segments; ++j) total += (positions[j + 1] - positions[j]).norm();
-  const double target = std::clamp(t, 0.0, 1.0) * total;
-  double run = 0;
+  at.resize(positions.size());
+  at[0] = 0;
+  for (size_t j = 1; j < positions.size(); ++j) at[j] = at[j - 1] + (positions[j] - positions[j - 1]).norm();
+}
+
+// Locates arc-length fraction t: segment j (between points j and j+1, on face strip[j]) and the
+// fraction within it.
+void locate_fraction(const std::vector<double>& at, double t, size_t& segment, double& alpha) {
+  const size_t segments = at.size() - 1;
+  const double target = std::clamp(t, 0.0, 1.0) * at.back();
   for (size_t j = 0; j < segments; ++j) {
-    const double len = (positions[j + 1] - positions[j]).norm();
-    if (run + len >= target && len > 0) {
+    const double len = at[j + 1] - at[j];
+    if (at[j + 1] >= target && len > 0) {
       segment = j;
-      alpha = std::clamp((target - run) / len, 0.0, 1.0);
+      alpha = std::clamp((target - at[j]) / len, 0.0, 1.0);
       return;
     }
-    run += len;
   }
   segment = segments - 1;
   alpha = 1;
@@ -813,18 +946,22 @@ MeshPoint lerp_on_segment(const TriMesh& mesh, const GeodesicPath& path, size_t 
 
 MeshPoint eval_path(const TriMesh& mesh, const GeodesicPath& path, double t) {
   if (path.strip.empty()) return path.start;
+  static thread_local std::vector<double> at;
+  arc_lengths(mesh, path, at);
   size_t j;
   double alpha;
-  locate_fraction(mesh, path, t, j, alpha);
+  locate_fraction(at, t, j, alpha);
   return lerp_on_segment(mesh, path, j, alpha);
 }
 
 GeodesicPath sub_path(const TriMesh& mesh, const GeodesicPath& path, double t0, double t1) {
   if (path.strip.empty()) return path;
+  static thread_local std::vector<double> at;
+  arc_lengths(mesh, path, at);
   size_t j0, j1;
   double a0, a1;
-  locate_fraction(mesh, path, t0, j0, a0);
-  locate_fraction(mesh, path, t1, j1, a1);
+  locate_fraction(at, t0, j0, a0);
+  locate_fraction(at, t1, j1, a1);
   GeodesicPath out;
   out.start = lerp_on_segment(mesh, path, j0, a0);
   out.end = lerp_on_segment(mesh, path, j1, a1);

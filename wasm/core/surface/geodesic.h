@@ -9,7 +9,9 @@
 //         semi-star in the strip replaced by its other semi-star; if the path does not get shorter the
 //         vertex is frozen; repeat until no reflex vertex is left unfrozen. Each pass flips every
 //         reflex vertex whose run does not touch another's, and a flip takes in the neighbouring
-//         boundary vertices that would still block the path (a "zipper", flipped at once).
+//         boundary vertices that would still block the path (a "zipper", flipped at once), or rather
+//         replaces the strip between the neighbouring apices by the faces along the straight line
+//         between them (a "chord", which crosses many rows of vertices at once).
 // A path is its strip of faces and the intercepts (lerps) on the edges between consecutive faces.
 #pragma once
 
@@ -120,6 +122,8 @@ class GeodesicSolver {
   };
   std::vector<int> slot_;
   std::vector<Visit> visits_;
+  // Face centroids in single precision (the face nodes' positions: one read instead of four).
+  std::vector<Eigen::Vector3f> centroids_;
   // Angle sum around each vertex, filled in when phase (iii) first needs it (NaN until then).
   std::vector<double> angle_sums_;
 };

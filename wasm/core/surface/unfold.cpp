@@ -30,41 +30,55 @@ void face_frame(const TriMesh& mesh, int face, Vec3& origin, Vec3& x, Vec3& y) {
 
 }  // namespace
 
-void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedStrip& out) {
+void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedStrip& out, const UnfoldedStrip* reuse) {
   const size_t n = strip.size();
+  // The faces `reuse` laid out at the start of the same strip keep their places.
+  size_t known = 0;
+  if (reuse) {
+    const size_t common = std::min(n, reuse->faces.size());
+    while (known < common && reuse->faces[known] == strip[known]) ++known;
+  }
   out.faces = strip;
   out.corners.resize(n);
   out.portals.resize(n > 0 ? n - 1 : 0);
   if (n == 0) return;
+  if (known > 0) {
+    std::copy(reuse->corners.begin(), reuse->corners.begin() + known, out.corners.begin());
+    std::copy(reuse->portals.begin(), reuse->portals.begin() + (known - 1), out.portals.begin());
+  }
   auto length = [&](int a, int b) { return (mesh.positions[a] - mesh.positions[b]).norm(); };
-  {
+  if (known == 0) {
+    known = 1;
     const auto& t = mesh.triangles[strip[0]];
     auto& c = out.corners[0];
     c[0] = Vec2::Zero();
     c[1] = Vec2(length(t[0], t[1]), 0);
     c[2] = place_left(c[0], c[1], length(t[0], t[2]), length(t[1], t[2]));
   }
-  for (size_t i = 0; i + 1 < n; ++i) {
-    const int f = strip[i], g = strip[i + 1];
-    const int k = edge_to(mesh, f, g);
-    const auto& tf = mesh.triangles[f];
-    const int a = tf[k], b = tf[(k + 1) % 3];  // a on the right, b on the left of travel
-    const Vec2 pa = out.corners[i][k], pb = out.corners[i][(k + 1) % 3];
-    out.portals[i] = {pb, pa, b, a};
-    const auto& tg = mesh.triangles[g];
-    const int ka = corner_of(mesh, g, a), kb = corner_of(mesh, g, b);
-    const int kc = 3 - ka - kb;
-    auto& c = out.corners[i + 1];
-    c[ka] = pa;
-    c[kb] = pb;
-    // g winds (b, a, c): c is left of b -> a. Its coordinates along and across edge b -> a, as
-    // multiples of the edge (the unfolded edge has the same length as in space).
-    const Vec3 e = mesh.positions[a] - mesh.positions[b], w = mesh.positions[tg[kc]] - mesh.positions[b];
-    const double e2 = e.squaredNorm();
-    const Vec2 edge = pa - pb;
-    c[kc] = e2 > 0 ? Vec2(pb + (w.dot(e) / e2) * edge + (w.cross(e).norm() / e2) * Vec2(-edge.y(), edge.x()))
-                   : place_left(pb, pa, length(b, tg[kc]), length(a, tg[kc]));
+  for (size_t i = known - 1; i + 1 < n; ++i) {
+    const int f = strip[i];
+    const int k = edge_to(mesh, f, strip[i + 1]);
+    const auto& t = mesh.triangles[f];
+    // t[k] on the right, t[k+1] on the left of travel
+    out.portals[i] = {out.corners[i][(k + 1) % 3], out.corners[i][k], t[(k + 1) % 3], t[k]};
+    lay_across(mesh, f, k, out.corners[i], out.corners[i + 1]);
   }
+}
+
+void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf, std::array<Vec2, 3>& cg) {
+  const int g = mesh.adjacency[f][k];
+  const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+  const int ka = corner_of(mesh, g, a), kb = corner_of(mesh, g, b), kc = 3 - ka - kb;
+  const Vec2 pa = cf[k], pb = cf[(k + 1) % 3], edge = pa - pb;
+  cg[ka] = pa;
+  cg[kb] = pb;
+  // g winds (b, a, c): c is left of b -> a. Its coordinates along and across edge b -> a, as
+  // multiples of the edge (the unfolded edge has the same length as in space).
+  const int c = mesh.triangles[g][kc];
+  const Vec3 e = mesh.positions[a] - mesh.positions[b], w = mesh.positions[c] - mesh.positions[b];
+  const double e2 = e.squaredNorm();
+  cg[kc] = e2 > 0 ? Vec2(pb + (w.dot(e) / e2) * edge + (w.cross(e).norm() / e2) * Vec2(-edge.y(), edge.x()))
+                  : place_left(pb, pa, w.norm(), (mesh.positions[c] - mesh.positions[a]).norm());
 }
 
 Vec2 UnfoldedStrip::to_plane(const TriMesh& mesh, int i, const Vec3& v) const {

@@ -28,7 +28,11 @@ struct UnfoldedStrip {
   Vec3 to_space(const TriMesh& mesh, int i, const Vec2& v) const;
 };
 
-// Lays out `strip` (consecutive faces adjacent, consistently wound). Reuses `out`'s storage.
-void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedStrip& out);
+// Lays out `strip` (consecutive faces adjacent, consistently wound). Reuses `out`'s storage, and
+// the layout in `reuse` (another strip's, not `out`) of the faces it starts with in common.
+void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedStrip& out,
+                  const UnfoldedStrip* reuse = nullptr);
+// Lays the neighbour of face f across its edge k flat next to f, whose corners lie at `cf`.
+void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf, std::array<Vec2, 3>& cg);
 
 }  // namespace splinekit::surface
