@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace splinekit::surface {
 
@@ -735,7 +736,8 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       }
       // A chord spans the faces around the neighbouring apices: look for room before tracing it.
       int lo = 0, hi = strip_size() - 1, unused;
-      const bool room = (apices[j - 1].vertex < 0 || run_of(apices[j - 1].vertex, apices[j - 1].portal, lo, unused)) &&
+      const bool room = options_.chords &&
+                        (apices[j - 1].vertex < 0 || run_of(apices[j - 1].vertex, apices[j - 1].portal, lo, unused)) &&
                         (apices[j + 1].vertex < 0 || run_of(apices[j + 1].vertex, apices[j + 1].portal, unused, hi)) &&
                         !overlaps(lo, hi);
       if (!room || std::find(no_chord.begin(), no_chord.end(), flip.vertex) != no_chord.end() || !make_chord(j, flip))
@@ -781,6 +783,17 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
 
 bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats,
                                    SearchGraph graph) {
+  // From the end that comes first (by face, then barycentrics), reversed if need be: where locally
+  // shortest paths lie close together, the search and the straightening from either end may settle
+  // on different ones, and the path between two points should not depend on their order.
+  const auto before = [](const MeshPoint& x, const MeshPoint& y) {
+    return std::tie(x.face, x.uv.x(), x.uv.y()) < std::tie(y.face, y.uv.x(), y.uv.y());
+  };
+  if (before(b, a)) {
+    const bool reached = shortest_path(b, a, path, stats, graph);
+    path = reversed(mesh_, path);
+    return reached;
+  }
   static thread_local std::vector<int> strip;
   if (!initial_strip(a, b, strip, stats, graph)) {
     path = GeodesicPath{a, b, {}, {}};

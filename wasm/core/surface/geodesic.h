@@ -56,6 +56,7 @@ enum class SearchGraph { kRefined, kDual };
 
 struct ShortestPathOptions {
   bool straighten = true;          // phase (iii)
+  bool chords = true;              // phase (iii) flips along the line between apices (else semi-stars and zippers only)
   int max_flips = 100000;          // safety bound on phase (iii)
   // Graph resolution (phase (i)): `steiner` nodes on every edge, and edges longer than
   // long_edge_fraction of the bounding-box diagonal get one node per such length. The paper uses
