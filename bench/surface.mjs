@@ -366,7 +366,8 @@ the native tests check (tests/native/surface/validity_test.cpp, 10 polygons per 
 Per-curve ms as reported by traceBezier (the wasm work, timed inside the module), after 10 warm-up
 curves. Random: 4 control points uniform over the surface's area, anywhere on it (the first 100 are
 the polygons of the validity table; b/Surf §6.1 instead casts rays along the view direction, which
-on spot_loop2_369k gave slower curves, 12.9 against 8.5 ms median on 2026-12-01). Moderate: 4
+on spot_loop2_369k gave slower curves, 12.9 against 8.5 ms median, with the straightening of
+2026-12-01 before chords). Moderate: 4
 control points at the ends of straightest geodesics from a random centre, in random directions, of
 random lengths up to 5% of the bounding-box diagonal. Budget: median ≤ 5 ms, p99 ≤ 50 ms (ratio > 1 =
 over budget).
@@ -412,7 +413,8 @@ Paths shorter than exact: **${shorter}**.
 ### Memory and precompute
 
 Bytes held by the mesh structures (positions, faces, adjacency, vertex maps: mesh_bytes) and by the
-solver (search graph and search scratch: GeodesicSolver::bytes), per triangle, right after building
+solver (search graph, single-precision face centroids (12 bytes per triangle, since 2026-12-01: 3-5%
+faster curves in wasm), vertex angle sums and search scratch: GeodesicSolver::bytes), per triangle, right after building
 and again after the shortest paths above (the scratch list of touched nodes grows with the searches); precompute = build_mesh
 (welding, orientation, adjacency) + GeodesicSolver construction, native, median of 3. The wasm columns
 are SurfaceMesh.info.bytes per triangle and SurfaceMesh.load (file parse included) in Node.
