@@ -1,5 +1,6 @@
 // Mesh building and locally shortest paths against closed forms.
 #include "surface/geodesic.h"
+#include "surface/unfold.h"
 #include "surface/tangent.h"
 #include "test_meshes.h"
 
@@ -181,6 +182,38 @@ TEST(ShortestPath, CrossesManyRowsAlongAChord) {
   EXPECT_LE(with.flips, 30);
   EXPECT_GE(without.flips, 60);
   EXPECT_EQ(with.frozen, 0);
+}
+
+TEST(UnfoldStrip, LaysFacesIsometricallyAndReusesACommonStartExactly) {
+  // Two paths on a cylinder from the same point to nearby targets: their strips start alike.
+  const TriMesh mesh = testing::build(testing::cylinder(24, 8));
+  GeodesicSolver solver(mesh);
+  const MeshPoint a = testing::point_at(mesh, Vec3(std::cos(0.1), std::sin(0.1), 0.3));  // inside a face
+  GeodesicPath p1, p2;
+  ASSERT_TRUE(solver.shortest_path(a, testing::point_at(mesh, Vec3(-1, 0.05, 1.7)), p1));
+  ASSERT_TRUE(solver.shortest_path(a, testing::point_at(mesh, Vec3(-1, -0.05, 1.6)), p2));
+  UnfoldedStrip u1, fresh, reused;
+  unfold_strip(mesh, p1.strip, u1);
+  unfold_strip(mesh, p2.strip, fresh);
+  unfold_strip(mesh, p2.strip, reused, &u1);
+  size_t common = 0;
+  while (common < std::min(p1.strip.size(), p2.strip.size()) && p1.strip[common] == p2.strip[common]) ++common;
+  ASSERT_GE(common, 2u);
+  ASSERT_LT(common, p2.strip.size());
+  ASSERT_EQ(reused.corners.size(), fresh.corners.size());
+  for (size_t i = 0; i < fresh.corners.size(); ++i) {
+    const auto& t = mesh.triangles[p2.strip[i]];
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(reused.corners[i][k], fresh.corners[i][k]) << "face " << i;
+      const double in_space = (mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]).norm();
+      EXPECT_NEAR((fresh.corners[i][(k + 1) % 3] - fresh.corners[i][k]).norm(), in_space, 1e-12) << "face " << i;
+    }
+  }
+  for (size_t i = 0; i < fresh.portals.size(); ++i) {
+    EXPECT_EQ(reused.portals[i].left, fresh.portals[i].left);
+    EXPECT_EQ(reused.portals[i].right, fresh.portals[i].right);
+    EXPECT_EQ(reused.portals[i].left_vertex, fresh.portals[i].left_vertex);
+  }
 }
 
 TEST(ShortestPath, MatchesUnfoldingsOnACube) {
