@@ -63,6 +63,12 @@ double corner_angle(const TriMesh& mesh, int face, int v) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
+// The edge of `face` at its vertex v that a walk around v crosses to keep v on its left (or right).
+int edge_around(const TriMesh& mesh, int face, int v, bool keep_left) {
+  const int k = corner_of(mesh, face, v);
+  return keep_left ? (k + 2) % 3 : k;
+}
+
 // Faces that contain a point: its face, the neighbour across the edge it lies on, or its vertex's fan.
 void faces_of_point(const TriMesh& mesh, const MeshPoint& p, std::vector<int>& faces) {
   faces.clear();
@@ -497,13 +503,12 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     int first, last;
     if (!run_of(v, apices[j].portal, first, last)) return false;
     const int f0 = strip[first];
-    const int k0 = corner_of(mesh_, f0, v);
-    const bool run_forward = first < last && mesh_.adjacency[f0][(k0 + 2) % 3] == strip[first + 1];
+    // The run turns around v keeping it on its left or right; the other semi-star the other way.
+    const bool run_left = first < last && mesh_.adjacency[f0][edge_around(mesh_, f0, v, true)] == strip[first + 1];
     flip.first = first, flip.last = last;
     flip.other.clear();
     for (int f = f0, steps = 0; steps < 4096; ++steps) {
-      const int k = corner_of(mesh_, f, v);
-      f = run_forward ? mesh_.adjacency[f][k] : mesh_.adjacency[f][(k + 2) % 3];
+      f = mesh_.adjacency[f][edge_around(mesh_, f, v, !run_left)];
       if (f < 0) return false;
       if (f == strip[last]) break;
       flip.other.push_back(f);
@@ -644,7 +649,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         for (int steps = 0;; ++steps) {
           const int k = corner_of(mesh_, f, p.vertex);
           if (side(cf[(k + 1) % 3]) < 0 && side(cf[(k + 2) % 3]) > 0) break;
-          if (steps > 64 || !step(left ? (k + 2) % 3 : k) || f == strip[first]) return false;
+          if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == strip[first]) return false;
         }
       }
       // Along the line: it leaves each face through the edge from a corner on its right to one on
@@ -684,8 +689,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
           last = m;
           break;
         }
-        const int k = corner_of(mesh_, f, q.vertex);
-        if (steps > 64 || !step(left ? (k + 2) % 3 : k)) return false;
+        if (steps > 64 || !step(edge_around(mesh_, f, q.vertex, left))) return false;
       }
     }
     if (!other.empty() && other.back() == strip[last]) other.pop_back();
