@@ -80,14 +80,14 @@ double CurveTracer::mean_face_area() {
 }
 
 // Straightening a strip through the pieces sweeps the path across the region between the pieces and
-// the geodesic, one vertex per flip: cheap when the pieces nearly line up (the polygons of deep levels,
-// short detours), expensive when they turn sharply around a far corner (the first levels of a large
-// control polygon), where the search finds a closer strip. The region is estimated by the fan of
-// triangles from the start over the points where pieces meet. Measured on random whole-surface
-// polygons of nefertiti and spot_loop2_369k: a bound of 64 mean faces seeds about 80% of the paths,
-// and seeded paths came out shorter than searched ones more often than longer; larger bounds seed
-// more without being faster and, around far corners, settle on longer local geodesics more often
-// (at 256 the curves of nefertiti grow 4% longer on average).
+// the geodesic: cheap when the pieces nearly line up (the polygons of deep levels, short detours),
+// costlier and more likely to settle on a longer local geodesic when they turn sharply around a far
+// corner (the first levels of a large control polygon), where the search finds a closer strip. The
+// region is estimated by the fan of triangles from the start over the points where pieces meet.
+// Measured on random whole-surface polygons of nefertiti and spot_loop2_369k: a bound of 64 mean
+// faces seeds about 80% of the paths, and seeded paths came out shorter than searched ones more often
+// than longer; larger bounds seed more without being faster (also with chords, 2026-12-01: 128 to
+// 1024 on spot_loop2_369k within 4%), and the curves of nefertiti grow longer (0.4% at 128, 8% at 1024).
 GeodesicPath CurveTracer::seed_or_search(const std::vector<GeodesicPath>& pieces) {
   constexpr double kSeedFaces = 64;
   const TriMesh& mesh = solver_.mesh();

@@ -609,7 +609,11 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   // did not shorten the path.
   static thread_local std::vector<int> no_chord;
   no_chord.clear();
-  auto make_chord = [&](size_t j, Flip& flip) {
+  // `room`: the strip faces from p's first around p to q's last around q (q_first: its first).
+  struct Room {
+    int p_first, q_first, q_last;
+  };
+  auto make_chord = [&](size_t j, const Room& room, Flip& flip) {
     const int n = strip_size();
     const Apex &p = apices[j - 1], &q = apices[j + 1];
     const Vec2 o = p.pos;
@@ -640,8 +644,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       first = 0, f = strip[0], on_strip = 0;
       cf = unfolded.corners[0];
       if (p.vertex >= 0) {  // around p, on from its first strip face, to the face whose corner holds the line
-        int run_last;
-        if (!run_of(p.vertex, p.portal, first, run_last)) return false;
+        first = room.p_first;
         const bool left = on_left(p);
         f = strip[first];
         cf = unfolded.corners[first];
@@ -664,8 +667,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         if ((cf[e] - o).dot(d) > reach && (cf[(e + 1) % 3] - o).dot(d) > reach) return false;  // past q
         if (!step(e)) return false;
       }
-      at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)]
-                         : (1 - end.uv.x() - end.uv.y()) * cf[0] + end.uv.x() * cf[1] + end.uv.y() * cf[2];
+      at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)] : on_face(cf, end);
       return true;
     };
     if (!trace()) return false;
@@ -679,13 +681,11 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     if ((at - o).norm() >= (apices[j].pos - p.pos).norm() + (q.pos - apices[j].pos).norm()) return false;
     int last = n - 1;
     if (q.vertex >= 0) {  // around q, on the side the line passes it, to its strip faces
-      int run_first, run_last;
-      if (!run_of(q.vertex, q.portal, run_first, run_last)) return false;
       const bool left = side(at) > 0;
       for (int steps = 0;; ++steps) {
-        int m = run_first;
-        while (m <= run_last && strip[m] != f) ++m;
-        if (m <= run_last) {
+        int m = room.q_first;
+        while (m <= room.q_last && strip[m] != f) ++m;
+        if (m <= room.q_last) {
           last = m;
           break;
         }
@@ -739,12 +739,13 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         continue;
       }
       // A chord spans the faces around the neighbouring apices: look for room before tracing it.
-      int lo = 0, hi = strip_size() - 1, unused;
-      const bool room = options_.chords &&
-                        (apices[j - 1].vertex < 0 || run_of(apices[j - 1].vertex, apices[j - 1].portal, lo, unused)) &&
-                        (apices[j + 1].vertex < 0 || run_of(apices[j + 1].vertex, apices[j + 1].portal, unused, hi)) &&
-                        !overlaps(lo, hi);
-      if (!room || std::find(no_chord.begin(), no_chord.end(), flip.vertex) != no_chord.end() || !make_chord(j, flip))
+      Room room{0, strip_size() - 1, strip_size() - 1};
+      int unused;
+      const bool fits = options_.chords &&
+                        (apices[j - 1].vertex < 0 || run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused)) &&
+                        (apices[j + 1].vertex < 0 || run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last)) &&
+                        !overlaps(room.p_first, room.q_last);
+      if (!fits || std::find(no_chord.begin(), no_chord.end(), flip.vertex) != no_chord.end() || !make_chord(j, room, flip))
         extend_chain(j, flip);
       if (!overlaps(flip.first, flip.last)) ++used;
     }
