@@ -216,6 +216,85 @@ TEST(UnfoldStrip, LaysFacesIsometricallyAndReusesACommonStartExactly) {
   }
 }
 
+TEST(UnfoldStrip, PiecesMovedRigidlyAndJoinedMatchAFreshLayout) {
+  // A strip laid out in two pieces, each in its own frame (phase (iii)'s trial strips keep the
+  // current layout between changes, moved rigidly), joined into one: the same layout as laying it
+  // out in one go, and the vertices shared across the joint at exactly the same points.
+  const TriMesh mesh = testing::build(testing::cylinder(24, 8));
+  GeodesicSolver solver(mesh);
+  GeodesicPath path;
+  ASSERT_TRUE(solver.shortest_path(testing::point_at(mesh, Vec3(std::cos(0.1), std::sin(0.1), 0.3)),
+                                   testing::point_at(mesh, Vec3(-1, 0.05, 1.7)), path));
+  const std::vector<int>& strip = path.strip;
+  ASSERT_GE(strip.size(), 8u);
+  UnfoldedStrip fresh, tail, u, laid;
+  unfold_strip(mesh, strip, fresh);
+  const size_t m = strip.size() / 2;
+  unfold_strip(mesh, std::vector<int>(strip.begin() + (m - 1), strip.end()), tail);  // from face m-1, its own frame
+  ASSERT_GT((tail.corners[0][1] - fresh.corners[m - 1][1]).norm(), 0.1);            // (a different frame indeed)
+  append_moved(u, fresh, 0, m, PlaneMotion{});
+  append_moved(u, tail, 1, tail.faces.size(), PlaneMotion::between(tail.corners[0], u.corners.back()));
+  join(mesh, u, m);
+  ASSERT_EQ(u.faces, strip);
+  ASSERT_EQ(u.portals.size(), fresh.portals.size());
+  for (size_t i = 0; i < strip.size(); ++i)
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR((u.corners[i][k] - fresh.corners[i][k]).norm(), 0, 1e-12) << "face " << i;
+  for (size_t i = 0; i < fresh.portals.size(); ++i) {
+    EXPECT_EQ(u.portals[i].left_vertex, fresh.portals[i].left_vertex);
+    EXPECT_EQ(u.portals[i].right_vertex, fresh.portals[i].right_vertex);
+    EXPECT_NEAR((u.portals[i].left - fresh.portals[i].left).norm(), 0, 1e-12);
+  }
+  // Across the joint a shared vertex is one point: in face m-1, in the faces after it around that
+  // vertex, and in their portals.
+  for (int v : {u.portals[m - 1].left_vertex, u.portals[m - 1].right_vertex}) {
+    const Vec2 at = u.corners[m - 1][corner_of(mesh, strip[m - 1], v)];
+    for (size_t i = m; i < strip.size() && corner_of(mesh, strip[i], v) >= 0; ++i) {
+      EXPECT_EQ(u.corners[i][corner_of(mesh, strip[i], v)], at) << "face " << i;
+      const Portal& in = u.portals[i - 1];
+      EXPECT_EQ(in.left_vertex == v ? in.left : in.right, at) << "portal " << i - 1;
+    }
+  }
+  // Laying face after face onto the first repeats unfold_strip bit for bit.
+  append_face(mesh, laid, strip[0], fresh.corners[0]);
+  for (size_t i = 1; i < strip.size(); ++i) append_laid(mesh, laid, strip[i]);
+  for (size_t i = 0; i < strip.size(); ++i)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(laid.corners[i][k], fresh.corners[i][k]);
+  for (size_t i = 0; i < fresh.portals.size(); ++i) EXPECT_EQ(laid.portals[i].left, fresh.portals[i].left);
+}
+
+TEST(GeodesicPath, KeepsItsArcLengthsThroughSubPathsAndReversal) {
+  // The straightening measures the path's arc lengths in the plane of its strip; sub paths and
+  // reversed paths carry them along. They must be the lengths of the polyline in space, and
+  // evaluating with them must give the points evaluating without them gives.
+  const TriMesh mesh = testing::build(testing::read_mesh(testing::shared_data("meshes/spot.obj")));
+  GeodesicSolver solver(mesh);
+  GeodesicPath path;
+  ASSERT_TRUE(solver.shortest_path(MeshPoint{100, Vec2(0.2, 0.3)}, MeshPoint{15000, Vec2(0.5, 0.1)}, path));
+  auto check = [&](const GeodesicPath& p, const char* what) {
+    SCOPED_TRACE(what);
+    ASSERT_EQ(p.arc.size(), p.lerps.size() + 2);
+    std::vector<Vec3> positions;
+    path_positions(mesh, p, positions);
+    double s = 0;
+    for (size_t j = 0; j < positions.size(); ++j) {
+      if (j > 0) s += (positions[j] - positions[j - 1]).norm();
+      EXPECT_NEAR(p.arc[j], s, 1e-12) << "point " << j;
+    }
+    GeodesicPath measured = p;
+    measured.arc.clear();
+    for (double t : {0.1, 0.37, 0.5, 0.83}) {
+      const Vec3 x = eval_position(mesh, eval_path(mesh, p, t)), y = eval_position(mesh, eval_path(mesh, measured, t));
+      EXPECT_NEAR((x - y).norm(), 0, 1e-12) << "t " << t;
+    }
+  };
+  ASSERT_GE(path.lerps.size(), 10u);
+  check(path, "path");
+  check(sub_path(mesh, path, 0.2, 0.7), "sub path");
+  check(sub_path(mesh, path, 0.31, 0.32), "short sub path");
+  check(reversed(mesh, path), "reversed");
+  check(reversed(mesh, sub_path(mesh, path, 0.05, 0.9)), "reversed sub path");
+}
+
 TEST(ShortestPath, MatchesUnfoldingsOnACube) {
   const TriMesh mesh = testing::build(testing::cube(4));
   GeodesicSolver solver(mesh);

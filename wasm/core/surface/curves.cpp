@@ -63,7 +63,7 @@ GeodesicPath CurveTracer::path(const MeshPoint& a, const MeshPoint& b) {
   ++stats.shortest_paths;
   if (!solver_.shortest_path(a, b, p, nullptr, search_)) {
     // Unreachable (another component): a degenerate path that stays at a.
-    p = GeodesicPath{a, a, {a.face}, {}};
+    p = GeodesicPath{a, a, {a.face}, {}, {}};
   }
   return p;
 }

@@ -419,10 +419,26 @@ double turn_at(const std::vector<Apex>& apices, size_t j) {
   return std::atan2(std::abs(cross2(a, b)), a.dot(b));
 }
 
-// Lerps on every portal from the funnel's polyline.
-void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vector<double>& lerps) {
+// Drops the apices where the funnel's path goes straight on but for rounding (a vertex on the line
+// between its neighbours): they would stand in for the real bends next to them.
+void drop_straight(std::vector<Apex>& apices) {
+  size_t kept = 1;
+  for (size_t j = 1; j + 1 < apices.size(); ++j) {
+    const Vec2 a = apices[j].pos - apices[kept - 1].pos, b = apices[j + 1].pos - apices[j].pos;
+    if (std::abs(cross2(a, b)) > 1e-12 * a.norm() * b.norm() || a.dot(b) < 0) apices[kept++] = apices[j];
+  }
+  apices[kept++] = apices.back();
+  apices.resize(kept);
+}
+
+// Lerps on every portal from the funnel's polyline, and the arc length at each point of the path
+// (start, crossings, end).
+void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vector<double>& lerps, std::vector<double>& arc) {
   const int n = static_cast<int>(u.portals.size());
   lerps.resize(n);
+  arc.resize(n + 2);
+  arc[0] = 0;
+  Vec2 prev = apices.front().pos;
   size_t j = 0;
   for (int i = 0; i < n; ++i) {
     while (j + 1 < apices.size() && apices[j + 1].portal < i) ++j;
@@ -435,7 +451,11 @@ void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vec
     if (!(s >= 0)) s = 0;
     if (s > 1) s = 1;
     lerps[i] = s;
+    const Vec2 at = R + s * (L - R);
+    arc[i + 1] = arc[i] + (at - prev).norm();
+    prev = at;
   }
+  arc[n + 1] = arc[n] + (apices.back().pos - prev).norm();
 }
 
 double polyline_length(const std::vector<Apex>& apices) {
@@ -452,21 +472,24 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   point_in_face(mesh_, a, strip.front(), path.start);
   point_in_face(mesh_, b, strip.back(), path.end);
   path.lerps.clear();
+  path.arc.clear();
   if (strip.size() == 1) return;
   // Flips keep the strip's first and last faces, so the end points stay where they are.
   const MeshPoint start = path.start, end = path.end;
 
-  // The strip, its unfolding and its funnel path, and the strip being tried with theirs.
+  // The strip, its unfolding and its funnel path, and the strip being tried with theirs (laid out
+  // from the strip's by `apply`).
   static thread_local UnfoldedStrip unfolded, trial_unfolded;
   static thread_local std::vector<Apex> apices, trial_apices;
   static thread_local std::vector<int> frozen, trial;
   frozen.clear();
-  auto solve = [&](const std::vector<int>& s, UnfoldedStrip& u, std::vector<Apex>& out) {
-    unfold_strip(mesh_, s, u, &s == &strip ? nullptr : &unfolded);  // a trial keeps the strip's start
-    funnel(u, u.map(0, start), u.map(static_cast<int>(s.size()) - 1, end), out);
+  auto shorten = [&](const UnfoldedStrip& u, std::vector<Apex>& out) {
+    funnel(u, u.map(0, start), u.map(static_cast<int>(u.faces.size()) - 1, end), out);
+    drop_straight(out);
     return polyline_length(out);
   };
-  double length = solve(strip, unfolded, apices);
+  unfold_strip(mesh_, strip, unfolded);
+  double length = shorten(unfolded, apices);
   auto strip_size = [&]() { return static_cast<int>(strip.size()); };
 
   // The faces of the strip around vertex v, from the face at index `at`.
@@ -487,6 +510,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     int first, last, vertex;
     double turn;
     std::vector<int> other;
+    std::vector<std::array<Vec2, 3>> laid;  // a chord's: where its trace laid `other` (the strip's layout)
     bool chain = false, chord = false;
   };
   static thread_local std::vector<Flip> flips;
@@ -500,6 +524,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     flip.vertex = v;
     flip.turn = turn_at(apices, j);
     flip.chain = flip.chord = false;
+    flip.laid.clear();
     int first, last;
     if (!run_of(v, apices[j].portal, first, last)) return false;
     const int f0 = strip[first];
@@ -620,6 +645,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     Vec2 d = q.pos - p.pos;
     auto side = [&](const Vec2& c) { return cross2(d, c - o); };  // > 0: left of the line
     static thread_local std::vector<int> other;
+    static thread_local std::vector<std::array<Vec2, 3>> laid;
     int first = 0, f = strip[0];
     int on_strip = 0;  // strip index of f while the walk follows the strip (its layout is known), else -1
     std::array<Vec2, 3> cf, cg;
@@ -635,12 +661,14 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       }
       f = g;
       other.push_back(f);
+      laid.push_back(cf);
       return true;
     };
     // From p along direction d until a face holds q (the end face for the end point); q's place there.
     Vec2 at;
     auto trace = [&]() {
       other.clear();
+      laid.clear();
       first = 0, f = strip[0], on_strip = 0;
       cf = unfolded.corners[0];
       if (p.vertex >= 0) {  // around p, on from its first strip face, to the face whose corner holds the line
@@ -692,25 +720,52 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         if (steps > 64 || !step(edge_around(mesh_, f, q.vertex, left))) return false;
       }
     }
-    if (!other.empty() && other.back() == strip[last]) other.pop_back();
+    if (!other.empty() && other.back() == strip[last]) other.pop_back(), laid.pop_back();
     if (last <= first) return false;
     flip.first = first, flip.last = last;
     flip.other.assign(other.begin(), other.end());
+    flip.laid.assign(laid.begin(), laid.end());
     flip.chord = true;
     return true;
   };
 
-  // The strip with `chosen` made (in strip order).
-  auto apply = [&](const std::vector<const Flip*>& chosen, std::vector<int>& out) {
-    out.clear();
-    int at = 0;
-    for (const Flip* f : chosen) {
-      out.insert(out.end(), strip.begin() + at, strip.begin() + f->first + 1);
-      out.insert(out.end(), f->other.begin(), f->other.end());
-      at = f->last;
+  // The strip with `chosen` made (in strip order), and its layout: the strip's own between the
+  // changes, each piece moved rigidly to where the change before it leaves it; a chord's faces where
+  // its trace laid them (moved likewise); other faces laid anew.
+  auto apply = [&](const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u) {
+    u.faces.clear(), u.corners.clear(), u.portals.clear();
+    append_moved(u, unfolded, 0, chosen.front()->first + 1, PlaneMotion{});
+    PlaneMotion moved;
+    for (size_t i = 0; i < chosen.size(); ++i) {
+      const Flip& f = *chosen[i];
+      if (f.chord) {
+        const size_t joint = u.faces.size();
+        for (size_t k = 0; k < f.other.size(); ++k) append_face(mesh_, u, f.other[k], moved(f.laid[k]));
+        join(mesh_, u, joint);
+      } else {
+        for (int face : f.other) append_laid(mesh_, u, face);
+      }
+      append_laid(mesh_, u, strip[f.last]);
+      moved = PlaneMotion::between(unfolded.corners[f.last], u.corners.back());
+      const size_t next = i + 1 < chosen.size() ? chosen[i + 1]->first + 1 : strip.size(), joint = u.faces.size();
+      append_moved(u, unfolded, f.last + 1, next, moved);
+      join(mesh_, u, joint);
     }
-    out.insert(out.end(), strip.begin() + at, strip.end());
-    remove_loops(out, slot_);
+    out.assign(u.faces.begin(), u.faces.end());
+    // A new face may also be one the strip keeps elsewhere (or another flip's): then the strip has a
+    // loop to cut, and the faces after it are laid anew.
+    constexpr int kNew = -2;
+    size_t added = 0, seen = 0;
+    bool repeated = false;
+    for (const Flip* f : chosen)
+      for (int face : f->other) repeated |= slot_[face] == kNew, slot_[face] = kNew, ++added;
+    for (int face : out) seen += slot_[face] == kNew;
+    for (const Flip* f : chosen)
+      for (int face : f->other) slot_[face] = -1;
+    if (repeated || seen != added) {
+      remove_loops(out, slot_);
+      unfold_strip(mesh_, out, u, &unfolded);
+    }
   };
 
   static thread_local std::vector<std::pair<double, size_t>> order;
@@ -753,14 +808,14 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     chosen.clear();
     for (size_t i = 0; i < used; ++i) chosen.push_back(&flips[i]);
     std::sort(chosen.begin(), chosen.end(), [](const Flip* x, const Flip* y) { return x->first < y->first; });
-    apply(chosen, trial);
-    double trial_length = solve(trial, trial_unfolded, trial_apices);
+    apply(chosen, trial, trial_unfolded);
+    double trial_length = shorten(trial_unfolded, trial_apices);
     if (!(trial_length < length - 1e-12 * mesh_.scale) && chosen.size() > 1) {
       // Together they did not shorten the path: fall back to the largest turn alone.
       const Flip* best = *std::max_element(chosen.begin(), chosen.end(), [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
       chosen.assign(1, best);
-      apply(chosen, trial);
-      trial_length = solve(trial, trial_unfolded, trial_apices);
+      apply(chosen, trial, trial_unfolded);
+      trial_length = shorten(trial_unfolded, trial_apices);
     }
     if (trial_length < length - 1e-12 * mesh_.scale) {
       strip.swap(trial);
@@ -782,7 +837,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     }
   }
   // Crossings of the final strip.
-  crossings(unfolded, apices, path.lerps);
+  crossings(unfolded, apices, path.lerps, path.arc);
   path.strip = strip;
 }
 
@@ -801,7 +856,7 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
   }
   static thread_local std::vector<int> strip;
   if (!initial_strip(a, b, strip, stats, graph)) {
-    path = GeodesicPath{a, b, {}, {}};
+    path = GeodesicPath{a, b, {}, {}, {}};
     return false;
   }
   straighten(a, b, strip, path, stats);
@@ -928,13 +983,16 @@ double path_length(const TriMesh& mesh, const GeodesicPath& path) {
 
 namespace {
 
-// The arc length of a path at each of its points (start, crossings, end).
-void arc_lengths(const TriMesh& mesh, const GeodesicPath& path, std::vector<double>& at) {
+// The arc length of a path at each of its points (start, crossings, end): the path's own, or measured
+// into `at`.
+const std::vector<double>& arc_lengths(const TriMesh& mesh, const GeodesicPath& path, std::vector<double>& at) {
+  if (path.arc.size() == path.lerps.size() + 2) return path.arc;
   static thread_local std::vector<Vec3> positions;
   path_positions(mesh, path, positions);
   at.resize(positions.size());
   at[0] = 0;
   for (size_t j = 1; j < positions.size(); ++j) at[j] = at[j - 1] + (positions[j] - positions[j - 1]).norm();
+  return at;
 }
 
 // Locates arc-length fraction t: segment j (between points j and j+1, on face strip[j]) and the
@@ -964,8 +1022,8 @@ MeshPoint lerp_on_segment(const TriMesh& mesh, const GeodesicPath& path, size_t 
 
 MeshPoint eval_path(const TriMesh& mesh, const GeodesicPath& path, double t) {
   if (path.strip.empty()) return path.start;
-  static thread_local std::vector<double> at;
-  arc_lengths(mesh, path, at);
+  static thread_local std::vector<double> scratch;
+  const std::vector<double>& at = arc_lengths(mesh, path, scratch);
   size_t j;
   double alpha;
   locate_fraction(at, t, j, alpha);
@@ -974,8 +1032,8 @@ MeshPoint eval_path(const TriMesh& mesh, const GeodesicPath& path, double t) {
 
 GeodesicPath sub_path(const TriMesh& mesh, const GeodesicPath& path, double t0, double t1) {
   if (path.strip.empty()) return path;
-  static thread_local std::vector<double> at;
-  arc_lengths(mesh, path, at);
+  static thread_local std::vector<double> scratch;
+  const std::vector<double>& at = arc_lengths(mesh, path, scratch);
   size_t j0, j1;
   double a0, a1;
   locate_fraction(at, t0, j0, a0);
@@ -985,6 +1043,12 @@ GeodesicPath sub_path(const TriMesh& mesh, const GeodesicPath& path, double t0, 
   out.end = lerp_on_segment(mesh, path, j1, a1);
   out.strip.assign(path.strip.begin() + j0, path.strip.begin() + j1 + 1);
   out.lerps.assign(path.lerps.begin() + j0, path.lerps.begin() + j1);
+  // Its arc lengths: the path's from its start point on.
+  const double s0 = at[j0] + a0 * (at[j0 + 1] - at[j0]), s1 = at[j1] + a1 * (at[j1 + 1] - at[j1]);
+  out.arc.resize(out.lerps.size() + 2);
+  out.arc[0] = 0;
+  for (size_t k = 1; k <= out.lerps.size(); ++k) out.arc[k] = at[j0 + k] - s0;
+  out.arc.back() = std::max(s1 - s0, out.arc[out.lerps.size()]);
   return out;
 }
 
@@ -995,6 +1059,11 @@ GeodesicPath reversed(const TriMesh&, const GeodesicPath& path) {
   out.strip.assign(path.strip.rbegin(), path.strip.rend());
   out.lerps.resize(path.lerps.size());
   for (size_t i = 0; i < path.lerps.size(); ++i) out.lerps[i] = 1 - path.lerps[path.lerps.size() - 1 - i];
+  if (!path.arc.empty()) {
+    out.arc.resize(path.arc.size());
+    const double total = path.arc.back();
+    for (size_t k = 0; k < path.arc.size(); ++k) out.arc[k] = total - path.arc[path.arc.size() - 1 - k];
+  }
   return out;
 }
 

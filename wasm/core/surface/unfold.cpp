@@ -81,6 +81,81 @@ void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf
                   : place_left(pb, pa, w.norm(), (mesh.positions[c] - mesh.positions[a]).norm());
 }
 
+PlaneMotion PlaneMotion::between(const std::array<Vec2, 3>& was, const std::array<Vec2, 3>& now) {
+  // From the face's longest edge at corner 0 (its length is the same in both layouts).
+  const int k = (was[1] - was[0]).squaredNorm() >= (was[2] - was[0]).squaredNorm() ? 1 : 2;
+  const Vec2 a = was[k] - was[0], b = now[k] - now[0];
+  const double aa = a.squaredNorm();
+  PlaneMotion m;
+  m.from = was[0];
+  m.to = now[0];
+  if (aa > 0) {
+    const double c = a.dot(b), s = a.x() * b.y() - a.y() * b.x(), len = std::hypot(c, s);
+    if (len > 0) m.c = c / len, m.s = s / len;
+  }
+  // No motion beyond the layouts' rounding (a flat region between the changes): none at all, so
+  // that points the layouts agree on (collinear vertices, say) stay exactly where they were.
+  const double tiny = 1e-14;
+  if (std::abs(m.s) <= tiny && (m.to - m.from).norm() <= tiny * (m.from.norm() + std::sqrt(aa))) return PlaneMotion{};
+  return m;
+}
+
+void append_face(const TriMesh& mesh, UnfoldedStrip& u, int face, const std::array<Vec2, 3>& corners) {
+  if (!u.faces.empty()) {
+    const int f = u.faces.back();
+    const int k = edge_to(mesh, f, face);
+    const auto& t = mesh.triangles[f];
+    const auto& c = u.corners.back();
+    u.portals.push_back({c[(k + 1) % 3], c[k], t[(k + 1) % 3], t[k]});
+  }
+  u.faces.push_back(face);
+  u.corners.push_back(corners);
+}
+
+void append_laid(const TriMesh& mesh, UnfoldedStrip& u, int face) {
+  std::array<Vec2, 3> corners;
+  lay_across(mesh, u.faces.back(), edge_to(mesh, u.faces.back(), face), u.corners.back(), corners);
+  append_face(mesh, u, face, corners);
+}
+
+void append_moved(UnfoldedStrip& u, const UnfoldedStrip& src, size_t from, size_t to, const PlaneMotion& m) {
+  if (from >= to) return;
+  const bool portal_in = !u.faces.empty();
+  u.faces.insert(u.faces.end(), src.faces.begin() + from, src.faces.begin() + to);
+  if (m.identity()) {
+    u.corners.insert(u.corners.end(), src.corners.begin() + from, src.corners.begin() + to);
+    u.portals.insert(u.portals.end(), src.portals.begin() + (from - portal_in), src.portals.begin() + (to - 1));
+    return;
+  }
+  for (size_t i = from; i < to; ++i) u.corners.push_back(m(src.corners[i]));
+  for (size_t i = from - portal_in; i + 1 < to; ++i) {
+    const Portal& p = src.portals[i];
+    u.portals.push_back({m(p.left), m(p.right), p.left_vertex, p.right_vertex});
+  }
+}
+
+void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first) {
+  if (first == 0 || first >= u.faces.size()) return;
+  Portal& in = u.portals[first - 1];
+  const int a = in.left_vertex, b = in.right_vertex;
+  const auto& before = u.corners[first - 1];
+  const Vec2 pa = before[corner_of(mesh, u.faces[first - 1], a)], pb = before[corner_of(mesh, u.faces[first - 1], b)];
+  for (size_t i = first; i < u.faces.size(); ++i) {
+    const auto& t = mesh.triangles[u.faces[i]];
+    bool shared = false;
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] == a) u.corners[i][k] = pa, shared = true;
+      if (t[k] == b) u.corners[i][k] = pb, shared = true;
+    }
+    if (!shared) break;
+    Portal& p = u.portals[i - 1];
+    if (p.left_vertex == a) p.left = pa;
+    if (p.left_vertex == b) p.left = pb;
+    if (p.right_vertex == a) p.right = pa;
+    if (p.right_vertex == b) p.right = pb;
+  }
+}
+
 Vec2 UnfoldedStrip::to_plane(const TriMesh& mesh, int i, const Vec3& v) const {
   // Face frame coordinates, then the rotation that takes the frame's corners to the unfolded ones.
   Vec3 o, x, y;

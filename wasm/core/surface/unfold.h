@@ -34,6 +34,34 @@ struct UnfoldedStrip {
 // the layout in `reuse` (another strip's, not `out`) of the faces it starts with in common.
 void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedStrip& out,
                   const UnfoldedStrip* reuse = nullptr);
+// A rigid motion of the plane: x -> to + R (x - from), R the rotation by the angle of cosine c, sine s.
+struct PlaneMotion {
+  Vec2 from = Vec2::Zero(), to = Vec2::Zero();
+  double c = 1, s = 0;
+  bool identity() const { return c == 1 && s == 0 && from == to; }
+  Vec2 operator()(const Vec2& x) const {
+    const Vec2 d = x - from;
+    return {to.x() + c * d.x() - s * d.y(), to.y() + s * d.x() + c * d.y()};
+  }
+  std::array<Vec2, 3> operator()(const std::array<Vec2, 3>& c3) const { return {(*this)(c3[0]), (*this)(c3[1]), (*this)(c3[2])}; }
+  // The motion that takes a face laid at `was` to the same face laid at `now`.
+  static PlaneMotion between(const std::array<Vec2, 3>& was, const std::array<Vec2, 3>& now);
+};
+
+// A strip laid out piece by piece from layouts already known (phase (iii)'s trial strips, which
+// keep most of the current strip's faces, moved rigidly, and lay only where they changed). Each
+// appends to `u` after its last face (the first of a strip starts it).
+// Face `face` laid at `corners` (continuing the layout of u's last face).
+void append_face(const TriMesh& mesh, UnfoldedStrip& u, int face, const std::array<Vec2, 3>& corners);
+// Face `face` laid flat across its edge with u's last face.
+void append_laid(const TriMesh& mesh, UnfoldedStrip& u, int face);
+// Faces [from, to) of `src` moved by m (u's last face is src's face from-1, or u is empty and from 0).
+void append_moved(UnfoldedStrip& u, const UnfoldedStrip& src, size_t from, size_t to, const PlaneMotion& m);
+// Makes the faces from `first` on meet face first-1 exactly at the two vertices they share with it
+// (in every face and portal up to the first face without them): pieces laid or moved separately
+// meet only up to rounding, and the funnel takes a vertex for one point only where it is one.
+void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first);
+
 // Lays the neighbour of face f across its edge k flat next to f, whose corners lie at `cf`.
 void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf, std::array<Vec2, 3>& cg);
 
