@@ -516,13 +516,14 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   static thread_local std::vector<Flip> flips;
   size_t used = 0;  // the first `used` flips are this pass's
 
-  // Phase (iii)'s flip of apex j, or false (and the vertex is frozen) when the path cannot be
-  // shortened there: the other side of v is open (a boundary) or spans at least π, i.e. the angle
-  // sum θ satisfies θ − (π + turn) ≥ π (the path through v is then locally shortest).
-  auto make_flip = [&](size_t j, Flip& flip) {
+  // Phase (iii)'s flip of apex j (where the path turns by `turn`), or false (and the vertex is
+  // frozen) when the path cannot be shortened there: the other side of v is open (a boundary) or
+  // spans at least π, i.e. the angle sum θ satisfies θ − (π + turn) ≥ π (the path through v is then
+  // locally shortest).
+  auto make_flip = [&](size_t j, double turn, Flip& flip) {
     const int v = apices[j].vertex;
     flip.vertex = v;
-    flip.turn = turn_at(apices, j);
+    flip.turn = turn;
     flip.chain = flip.chord = false;
     flip.laid.clear();
     int first, last;
@@ -788,7 +789,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     for (const auto& [neg_turn, j] : order) {
       if (used == flips.size()) flips.emplace_back();
       Flip& flip = flips[used];
-      if (!make_flip(j, flip)) {
+      if (!make_flip(j, -neg_turn, flip)) {
         frozen.push_back(apices[j].vertex);
         if (stats) ++stats->frozen;
         continue;
