@@ -262,6 +262,35 @@ TEST(UnfoldStrip, PiecesMovedRigidlyAndJoinedMatchAFreshLayout) {
   for (size_t i = 0; i < fresh.portals.size(); ++i) EXPECT_EQ(laid.portals[i].left, fresh.portals[i].left);
 }
 
+TEST(ShortestPath, IsTheFunnelPathOfItsOwnStrip) {
+  // Phase (iii) lays out its trial strips from the current one and takes up the current funnel path
+  // where the strips agree. Whatever it kept, the path it returns must be the one the funnel finds
+  // in its final strip laid out afresh (phase (ii) alone on that strip).
+  const TriMesh mesh = testing::build(testing::read_mesh(testing::shared_data("meshes/spot.obj")));
+  GeodesicSolver solver(mesh);
+  ShortestPathOptions funnel_only;
+  funnel_only.straighten = false;
+  GeodesicSolver plain(mesh, funnel_only);
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> face(0, static_cast<int>(mesh.triangles.size()) - 1);
+  int flipped = 0;
+  for (int i = 0; i < 40; ++i) {
+    const MeshPoint a{face(rng), Vec2(0.3, 0.3)}, b{face(rng), Vec2(0.2, 0.5)};
+    for (SearchGraph graph : {SearchGraph::kDual, SearchGraph::kRefined}) {
+      GeodesicPath path, again;
+      PathStats stats;
+      ASSERT_TRUE(solver.shortest_path(a, b, path, &stats, graph));
+      flipped += stats.flips;
+      std::vector<int> strip = path.strip;
+      plain.straighten(path.start, path.end, strip, again);
+      ASSERT_EQ(again.strip, path.strip);
+      EXPECT_NEAR(path_length(mesh, path), path_length(mesh, again), 1e-12 * mesh.scale) << "pair " << i;
+      for (size_t k = 0; k < path.lerps.size(); ++k) EXPECT_NEAR(path.lerps[k], again.lerps[k], 1e-9) << "pair " << i;
+    }
+  }
+  EXPECT_GT(flipped, 400);  // (the straightening had work to do)
+}
+
 TEST(GeodesicPath, KeepsItsArcLengthsThroughSubPathsAndReversal) {
   // The straightening measures the path's arc lengths in the plane of its strip; sub paths and
   // reversed paths carry them along. They must be the lengths of the polyline in space, and

@@ -355,19 +355,55 @@ double orient(const Vec2& a, const Vec2& b, const Vec2& c) { return cross2(b - a
 
 struct Apex {
   Vec2 pos;
-  int vertex = -1;  // mesh vertex (-1 for the end points)
-  int portal = -1;  // index of the last portal it bounds (-1 for the start; #portals for the end)
+  int vertex = -1;   // mesh vertex (-1 for the end points)
+  int portal = -1;   // index of the last portal it bounds (-1 for the start; #portals for the end)
+  int emitted = -1;  // the portal whose processing made it the apex (the funnel's state from then on
+                     // depends on it and the portals after it only)
+};
+
+// How a strip differs from one whose funnel path is known (`path`): its portals before `lo` are
+// that strip's, and its portals from `hi` on are that strip's portals `shift` further on, moved by
+// `motion`.
+struct Splice {
+  const std::vector<Apex>* path = nullptr;
+  int lo = 0, hi = 0, shift = 0;
+  PlaneMotion motion;
 };
 
 // The funnel algorithm over the portals of an unfolded strip ("simple stupid funnel").
-void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std::vector<Apex>& apices) {
+// With a splice, the funnel takes up the known path at its last apex made before `lo` (from there
+// on it is in the same state), and once an apex beyond `hi` is one of the known path's, it ends
+// with that path's (the same portals follow, moved).
+void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std::vector<Apex>& apices,
+            const Splice* splice = nullptr) {
   const int n = static_cast<int>(u.portals.size());
   apices.clear();
-  apices.push_back({source, -1, -1});
-  Vec2 apex = source, left = source, right = source;
-  int apex_index = -1, left_index = -1, right_index = -1;
-  int left_vertex = -1, right_vertex = -1;
-  for (int i = 0; i <= n; ++i) {
+  apices.push_back({source, -1, -1, -1});
+  if (splice) {
+    const std::vector<Apex>& known = *splice->path;
+    size_t m = 0;
+    while (m + 2 < known.size() && known[m + 1].emitted < splice->lo) ++m;
+    apices.insert(apices.end(), known.begin() + 1, known.begin() + m + 1);
+  }
+  Vec2 apex = apices.back().pos, left = apex, right = apex;
+  int apex_index = apices.back().portal, left_index = apex_index, right_index = apex_index;
+  int left_vertex = apices.back().vertex, right_vertex = left_vertex;
+  // The known path's apex that the one just made is, past `hi`, or 0.
+  auto known_from = [&]() -> size_t {
+    const Apex& x = apices.back();
+    if (!splice || x.portal < splice->hi || x.vertex < 0) return 0;
+    const std::vector<Apex>& known = *splice->path;
+    const int at = x.portal + splice->shift;
+    const auto y = std::lower_bound(known.begin(), known.end(), at, [](const Apex& a, int p) { return a.portal < p; });
+    return y != known.end() && y->portal == at && y->vertex == x.vertex ? static_cast<size_t>(y - known.begin()) : 0;
+  };
+  auto finish_known = [&](size_t y) {
+    const std::vector<Apex>& known = *splice->path;
+    for (size_t k = y + 1; k < known.size(); ++k)
+      apices.push_back({splice->motion(known[k].pos), known[k].vertex, known[k].portal - splice->shift, known[k].emitted - splice->shift});
+    apices.back().pos = target;
+  };
+  for (int i = apex_index + 1; i <= n; ++i) {
     const Vec2 L = i < n ? u.portals[i].left : target;
     const Vec2 R = i < n ? u.portals[i].right : target;
     const int lv = i < n ? u.portals[i].left_vertex : -1;
@@ -380,7 +416,8 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
         right_vertex = rv;
       } else {
         // R crosses over the left side: the left point becomes the apex.
-        apices.push_back({left, left_vertex, left_index});
+        apices.push_back({left, left_vertex, left_index, i});
+        if (const size_t y = known_from()) return finish_known(y);
         apex = left;
         apex_index = left_index;
         right = left = apex;
@@ -397,7 +434,8 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
         left_index = i;
         left_vertex = lv;
       } else {
-        apices.push_back({right, right_vertex, right_index});
+        apices.push_back({right, right_vertex, right_index, i});
+        if (const size_t y = known_from()) return finish_known(y);
         apex = right;
         apex_index = right_index;
         left = right = apex;
@@ -409,7 +447,7 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
     }
   }
   if (apices.back().pos == target && apices.size() > 1) apices.pop_back();
-  apices.push_back({target, -1, n});
+  apices.push_back({target, -1, n, n});
 }
 
 // Turning angle of the path at apex j (0 at the ends).
@@ -480,16 +518,18 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   // The strip, its unfolding and its funnel path, and the strip being tried with theirs (laid out
   // from the strip's by `apply`).
   static thread_local UnfoldedStrip unfolded, trial_unfolded;
-  static thread_local std::vector<Apex> apices, trial_apices;
+  // (`made`: the funnel's own apices, before those where it goes straight on are dropped)
+  static thread_local std::vector<Apex> apices, trial_apices, made, trial_made;
   static thread_local std::vector<int> frozen, trial;
   frozen.clear();
-  auto shorten = [&](const UnfoldedStrip& u, std::vector<Apex>& out) {
-    funnel(u, u.map(0, start), u.map(static_cast<int>(u.faces.size()) - 1, end), out);
+  auto shorten = [&](const UnfoldedStrip& u, std::vector<Apex>& raw, std::vector<Apex>& out, const Splice* splice) {
+    funnel(u, u.map(0, start), u.map(static_cast<int>(u.faces.size()) - 1, end), raw, splice);
+    out.assign(raw.begin(), raw.end());
     drop_straight(out);
     return polyline_length(out);
   };
   unfold_strip(mesh_, strip, unfolded);
-  double length = shorten(unfolded, apices);
+  double length = shorten(unfolded, made, apices, nullptr);
   auto strip_size = [&]() { return static_cast<int>(strip.size()); };
 
   // The faces of the strip around vertex v, from the face at index `at`.
@@ -732,9 +772,12 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
 
   // The strip with `chosen` made (in strip order), and its layout: the strip's own between the
   // changes, each piece moved rigidly to where the change before it leaves it; a chord's faces where
-  // its trace laid them (moved likewise); other faces laid anew.
-  auto apply = [&](const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u) {
+  // its trace laid them (moved likewise); other faces laid anew. `splice` tells the funnel where
+  // the strips agree (none when a loop had to be cut).
+  auto apply = [&](const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u, Splice& splice) {
     u.faces.clear(), u.corners.clear(), u.portals.clear();
+    splice.path = &made;
+    splice.lo = chosen.front()->first;
     append_moved(u, unfolded, 0, chosen.front()->first + 1, PlaneMotion{});
     PlaneMotion moved;
     for (size_t i = 0; i < chosen.size(); ++i) {
@@ -748,6 +791,9 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       }
       append_laid(mesh_, u, strip[f.last]);
       moved = PlaneMotion::between(unfolded.corners[f.last], u.corners.back());
+      splice.hi = static_cast<int>(u.faces.size()) - 1;
+      splice.shift = f.last - splice.hi;
+      splice.motion = moved;
       const size_t next = i + 1 < chosen.size() ? chosen[i + 1]->first + 1 : strip.size(), joint = u.faces.size();
       append_moved(u, unfolded, f.last + 1, next, moved);
       join(mesh_, u, joint);
@@ -764,6 +810,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     for (const Flip* f : chosen)
       for (int face : f->other) slot_[face] = -1;
     if (repeated || seen != added) {
+      splice.path = nullptr;
       remove_loops(out, slot_);
       unfold_strip(mesh_, out, u, &unfolded);
     }
@@ -809,19 +856,21 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     chosen.clear();
     for (size_t i = 0; i < used; ++i) chosen.push_back(&flips[i]);
     std::sort(chosen.begin(), chosen.end(), [](const Flip* x, const Flip* y) { return x->first < y->first; });
-    apply(chosen, trial, trial_unfolded);
-    double trial_length = shorten(trial_unfolded, trial_apices);
+    Splice splice;
+    apply(chosen, trial, trial_unfolded, splice);
+    double trial_length = shorten(trial_unfolded, trial_made, trial_apices, splice.path ? &splice : nullptr);
     if (!(trial_length < length - 1e-12 * mesh_.scale) && chosen.size() > 1) {
       // Together they did not shorten the path: fall back to the largest turn alone.
       const Flip* best = *std::max_element(chosen.begin(), chosen.end(), [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
       chosen.assign(1, best);
-      apply(chosen, trial, trial_unfolded);
-      trial_length = shorten(trial_unfolded, trial_apices);
+      apply(chosen, trial, trial_unfolded, splice);
+      trial_length = shorten(trial_unfolded, trial_made, trial_apices, splice.path ? &splice : nullptr);
     }
     if (trial_length < length - 1e-12 * mesh_.scale) {
       strip.swap(trial);
       std::swap(unfolded, trial_unfolded);
       apices.swap(trial_apices);
+      made.swap(trial_made);
       length = trial_length;
       if (stats) stats->flips += static_cast<int>(chosen.size());
     } else {
