@@ -685,18 +685,23 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     const Vec2 o = p.pos;
     Vec2 d = q.pos - p.pos;
     auto side = [&](const Vec2& c) { return cross2(d, c - o); };  // > 0: left of the line
-    static thread_local std::vector<int> other;
-    static thread_local std::vector<std::array<Vec2, 3>> laid;
+    // The faces the walk entered and where it laid them; a second aim takes the first one's layout
+    // as long as it enters the same faces (`known`: how many so far, or -1 once it left them).
+    static thread_local std::vector<int> other, before;
+    static thread_local std::vector<std::array<Vec2, 3>> laid, laid_before;
     int first = 0, f = strip[0];
     int on_strip = 0;  // strip index of f while the walk follows the strip (its layout is known), else -1
+    int known = -1;
     std::array<Vec2, 3> cf, cg;
     auto step = [&](int e) {  // into the face across edge e of f
       const int g = mesh_.adjacency[f][e];
       if (g < 0) return false;
-      if (on_strip >= 0 && on_strip + 1 < n && strip[on_strip + 1] == g) {
-        cf = unfolded.corners[++on_strip];
+      on_strip = on_strip >= 0 && on_strip + 1 < n && strip[on_strip + 1] == g ? on_strip + 1 : -1;
+      if (known >= 0 && known < static_cast<int>(before.size()) && before[known] == g) {
+        cf = laid_before[known++];
+      } else if (known = -1; on_strip >= 0) {
+        cf = unfolded.corners[on_strip];
       } else {
-        on_strip = -1;
         lay_across(mesh_, f, e, cf, cg);
         cf = cg;
       }
@@ -710,6 +715,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     auto trace = [&]() {
       other.clear();
       laid.clear();
+      known = before.empty() ? -1 : 0;
       first = 0, f = strip[0], on_strip = 0;
       cf = unfolded.corners[0];
       if (p.vertex >= 0) {  // around p, on from its first strip face, to the face whose corner holds the line
@@ -739,10 +745,13 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)] : on_face(cf, end);
       return true;
     };
+    before.clear();
     if (!trace()) return false;
     // The surface between turned the line: aim again where the line's faces put q.
     if (std::abs(cross2(d, at - o)) > 1e-3 * d.squaredNorm()) {
       d = at - o;
+      before.swap(other);
+      laid_before.swap(laid);
       if (!trace()) return false;
     }
     // The path from p to q through the line's faces is at least |at - o| long, so the chord cannot
