@@ -68,17 +68,26 @@ void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedSt
 void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf, std::array<Vec2, 3>& cg) {
   const int g = mesh.adjacency[f][k];
   const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-  const int ka = corner_of(mesh, g, a), kb = corner_of(mesh, g, b), kc = 3 - ka - kb;
+  // g winds (b, a, c) (faces are consistently wound): its edge to f runs from b to a (found by
+  // the corners when g meets f along two edges).
+  const auto& tg = mesh.triangles[g];
+  int kb = edge_to(mesh, g, f), ka = (kb + 1) % 3;
+  if (tg[kb] != b || tg[ka] != a) kb = corner_of(mesh, g, b), ka = corner_of(mesh, g, a);
+  const int kc = 3 - ka - kb;
   const Vec2 pa = cf[k], pb = cf[(k + 1) % 3], edge = pa - pb;
   cg[ka] = pa;
   cg[kb] = pb;
-  // g winds (b, a, c): c is left of b -> a. Its coordinates along and across edge b -> a, as
-  // multiples of the edge (the unfolded edge has the same length as in space).
-  const int c = mesh.triangles[g][kc];
+  // c is left of b -> a. Its coordinates along and across edge b -> a, as multiples of the edge
+  // (the unfolded edge has the same length as in space).
+  const int c = tg[kc];
   const Vec3 e = mesh.positions[a] - mesh.positions[b], w = mesh.positions[c] - mesh.positions[b];
   const double e2 = e.squaredNorm();
-  cg[kc] = e2 > 0 ? Vec2(pb + (w.dot(e) / e2) * edge + (w.cross(e).norm() / e2) * Vec2(-edge.y(), edge.x()))
-                  : place_left(pb, pa, w.norm(), (mesh.positions[c] - mesh.positions[a]).norm());
+  if (!(e2 > 0)) {
+    cg[kc] = place_left(pb, pa, w.norm(), (mesh.positions[c] - mesh.positions[a]).norm());
+    return;
+  }
+  const double inv = 1 / e2;
+  cg[kc] = pb + (w.dot(e) * inv) * edge + (w.cross(e).norm() * inv) * Vec2(-edge.y(), edge.x());
 }
 
 PlaneMotion PlaneMotion::between(const std::array<Vec2, 3>& was, const std::array<Vec2, 3>& now) {
