@@ -96,8 +96,6 @@ PlaneMotion PlaneMotion::between(const std::array<Vec2, 3>& was, const std::arra
   const Vec2 a = was[k] - was[0], b = now[k] - now[0];
   const double aa = a.squaredNorm();
   PlaneMotion m;
-  m.from = was[0];
-  m.to = now[0];
   if (aa > 0) {
     const double c = a.dot(b), s = a.x() * b.y() - a.y() * b.x(), len = std::hypot(c, s);
     if (len > 0) m.c = c / len, m.s = s / len;
@@ -105,7 +103,8 @@ PlaneMotion PlaneMotion::between(const std::array<Vec2, 3>& was, const std::arra
   // No motion beyond the layouts' rounding (a flat region between the changes): none at all, so
   // that points the layouts agree on (collinear vertices, say) stay exactly where they were.
   const double tiny = 1e-14;
-  if (std::abs(m.s) <= tiny && (m.to - m.from).norm() <= tiny * (m.from.norm() + std::sqrt(aa))) return PlaneMotion{};
+  if (std::abs(m.s) <= tiny && (now[0] - was[0]).norm() <= tiny * (was[0].norm() + std::sqrt(aa))) return PlaneMotion{};
+  m.t = now[0] - Vec2(m.c * was[0].x() - m.s * was[0].y(), m.s * was[0].x() + m.c * was[0].y());
   return m;
 }
 

@@ -34,15 +34,12 @@ struct UnfoldedStrip {
 // the layout in `reuse` (another strip's, not `out`) of the faces it starts with in common.
 void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedStrip& out,
                   const UnfoldedStrip* reuse = nullptr);
-// A rigid motion of the plane: x -> to + R (x - from), R the rotation by the angle of cosine c, sine s.
+// A rigid motion of the plane: x -> R x + t, R the rotation by the angle of cosine c, sine s.
 struct PlaneMotion {
-  Vec2 from = Vec2::Zero(), to = Vec2::Zero();
   double c = 1, s = 0;
-  bool identity() const { return c == 1 && s == 0 && from == to; }
-  Vec2 operator()(const Vec2& x) const {
-    const Vec2 d = x - from;
-    return {to.x() + c * d.x() - s * d.y(), to.y() + s * d.x() + c * d.y()};
-  }
+  Vec2 t = Vec2::Zero();
+  bool identity() const { return c == 1 && s == 0 && t.x() == 0 && t.y() == 0; }
+  Vec2 operator()(const Vec2& x) const { return {c * x.x() - s * x.y() + t.x(), s * x.x() + c * x.y() + t.y()}; }
   std::array<Vec2, 3> operator()(const std::array<Vec2, 3>& c3) const { return {(*this)(c3[0]), (*this)(c3[1]), (*this)(c3[2])}; }
   // The motion that takes a face laid at `was` to the same face laid at `now`.
   static PlaneMotion between(const std::array<Vec2, 3>& was, const std::array<Vec2, 3>& now);
