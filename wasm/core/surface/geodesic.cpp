@@ -560,6 +560,10 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   // frozen) when the path cannot be shortened there: the other side of v is open (a boundary) or
   // spans at least π, i.e. the angle sum θ satisfies θ − (π + turn) ≥ π (the path through v is then
   // locally shortest).
+  constexpr double kPi = 3.14159265358979323846;
+  // Whether the path through v, turning by `turn`, is locally shortest there (by v's angle sum,
+  // once known: NaN until then).
+  auto straight_through = [&](int v, double turn) { return angle_sums_[v] - kPi - turn >= kPi - 1e-9; };
   auto make_flip = [&](size_t j, double turn, Flip& flip) {
     const int v = apices[j].vertex;
     flip.vertex = v;
@@ -567,7 +571,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     flip.chain = flip.chord = false;
     flip.laid.clear();
     int first, last;
-    if (!run_of(v, apices[j].portal, first, last)) return false;
+    if (!run_of(v, apices[j].portal, first, last) || straight_through(v, turn)) return false;
     const int f0 = strip[first];
     // The run turns around v keeping it on its left or right; the other semi-star the other way.
     const bool run_left = first < last && mesh_.adjacency[f0][edge_around(mesh_, f0, v, true)] == strip[first + 1];
@@ -585,8 +589,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       for (int i = first; i <= last; ++i) angle_sum += corner_angle(mesh_, strip[i], v);
       for (int f : flip.other) angle_sum += corner_angle(mesh_, f, v);
     }
-    constexpr double kPi = 3.14159265358979323846;
-    return angle_sum - kPi - flip.turn < kPi - 1e-9;
+    return !straight_through(v, turn);
   };
   // Zippers. A path that runs along a line of mesh vertices on the wrong side of it bends at one of
   // them, v; flipping v alone moves the bend to the next vertex of the line, one pass per vertex.
@@ -843,6 +846,18 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       return std::any_of(flips.begin(), flips.begin() + used, [&](const Flip& f) { return first <= f.last + 1 && f.first <= last + 1; });
     };
     for (const auto& [neg_turn, j] : order) {
+      // A vertex whose faces a flip of this pass already changes cannot flip in it; it is only
+      // frozen (as make_flip would) if the path through it is locally shortest.
+      int run_first, run_last;
+      const int v = apices[j].vertex;
+      const bool blocked = used > 0 && run_of(v, apices[j].portal, run_first, run_last) && overlaps(run_first, run_last);
+      if (blocked && !std::isnan(angle_sums_[v])) {
+        if (straight_through(v, -neg_turn)) {
+          frozen.push_back(v);
+          if (stats) ++stats->frozen;
+        }
+        continue;
+      }
       if (used == flips.size()) flips.emplace_back();
       Flip& flip = flips[used];
       if (!make_flip(j, -neg_turn, flip)) {
@@ -850,6 +865,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         if (stats) ++stats->frozen;
         continue;
       }
+      if (blocked) continue;
       // A chord spans the faces around the neighbouring apices: look for room before tracing it.
       Room room{0, strip_size() - 1, strip_size() - 1};
       int unused;
