@@ -380,8 +380,10 @@ on spot_loop2_369k gave slower curves, 12.9 against 8.5 ms median, with the stra
 control points at the ends of straightest geodesics from a random centre, in random directions, of
 random lengths up to 5% of the bounding-box diagonal. Every list is traced three times over: "first"
 is the first pass as it came, "best of 3" takes per curve the fastest of the three (the work is
-identical; the spread is other load on the machine: on this 2-core machine the same code's median
-moved by ±10% between runs minutes apart). Budget: median ≤ 5 ms, p99 ≤ 50 ms (ratio > 1 = over budget).
+identical; the spread is other load on the machine). Between whole runs minutes apart, the same
+code's medians on this 2-core virtual machine moved by up to 25% (2026-12-02, spot_loop2_369k random:
+4.3 to 5.4 ms), which best of 3 does not take out. Budget: median ≤ 5 ms, p99 ≤ 50 ms (ratio > 1 =
+over budget).
 
 ${speed.join('\n')}
 
