@@ -34,6 +34,7 @@ struct UnfoldedStrip {
 // the layout in `reuse` (another strip's, not `out`) of the faces it starts with in common.
 void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedStrip& out,
                   const UnfoldedStrip* reuse = nullptr);
+
 // A rigid motion of the plane: x -> R x + t, R the rotation by the angle of cosine c, sine s.
 struct PlaneMotion {
   double c = 1, s = 0;
@@ -48,6 +49,7 @@ struct PlaneMotion {
 // A strip laid out piece by piece from layouts already known (phase (iii)'s trial strips, which
 // keep most of the current strip's faces, moved rigidly, and lay only where they changed). Each
 // appends to `u` after its last face (the first of a strip starts it).
+//
 // Face `face` laid at `corners` (continuing the layout of u's last face).
 void append_face(const TriMesh& mesh, UnfoldedStrip& u, int face, const std::array<Vec2, 3>& corners);
 // Face `face` laid flat across its edge with u's last face.
