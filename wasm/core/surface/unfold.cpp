@@ -69,10 +69,10 @@ void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf
   const int g = mesh.adjacency[f][k];
   const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
   // g winds (b, a, c) (faces are consistently wound): its edge to f runs from b to a (found by
-  // the corners when g meets f along two edges).
+  // the corners when g meets f along two edges, or its adjacency does not name f).
   const auto& tg = mesh.triangles[g];
   int kb = edge_to(mesh, g, f), ka = (kb + 1) % 3;
-  if (tg[kb] != b || tg[ka] != a) kb = corner_of(mesh, g, b), ka = corner_of(mesh, g, a);
+  if (kb < 0 || tg[kb] != b || tg[ka] != a) kb = corner_of(mesh, g, b), ka = corner_of(mesh, g, a);
   const int kc = 3 - ka - kb;
   const Vec2 pa = cf[k], pb = cf[(k + 1) % 3], edge = pa - pb;
   cg[ka] = pa;
