@@ -556,22 +556,21 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   static thread_local std::vector<Flip> flips;
   size_t used = 0;  // the first `used` flips are this pass's
 
-  // Phase (iii)'s flip of apex j (where the path turns by `turn`), or false (and the vertex is
-  // frozen) when the path cannot be shortened there: the other side of v is open (a boundary) or
-  // spans at least π, i.e. the angle sum θ satisfies θ − (π + turn) ≥ π (the path through v is then
-  // locally shortest).
   constexpr double kPi = 3.14159265358979323846;
   // Whether the path through v, turning by `turn`, is locally shortest there (by v's angle sum,
   // once known: NaN until then).
   auto straight_through = [&](int v, double turn) { return angle_sums_[v] - kPi - turn >= kPi - 1e-9; };
-  auto make_flip = [&](size_t j, double turn, Flip& flip) {
+  // Phase (iii)'s flip of apex j (where the path turns by `turn`), or false (and the vertex is
+  // frozen) when the path cannot be shortened there: the other side of v is open (a boundary) or
+  // spans at least π, i.e. the angle sum θ satisfies θ − (π + turn) ≥ π (the path through v is then
+  // locally shortest). `first`..`last`: v's run in the strip.
+  auto make_flip = [&](size_t j, double turn, int first, int last, Flip& flip) {
     const int v = apices[j].vertex;
     flip.vertex = v;
     flip.turn = turn;
     flip.chain = flip.chord = false;
     flip.laid.clear();
-    int first, last;
-    if (!run_of(v, apices[j].portal, first, last) || straight_through(v, turn)) return false;
+    if (straight_through(v, turn)) return false;
     const int f0 = strip[first];
     // The run turns around v keeping it on its left or right; the other semi-star the other way.
     const bool run_left = first < last && mesh_.adjacency[f0][edge_around(mesh_, f0, v, true)] == strip[first + 1];
@@ -850,7 +849,8 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       // frozen (as make_flip would) if the path through it is locally shortest.
       int run_first, run_last;
       const int v = apices[j].vertex;
-      const bool blocked = used > 0 && run_of(v, apices[j].portal, run_first, run_last) && overlaps(run_first, run_last);
+      const bool in_strip = run_of(v, apices[j].portal, run_first, run_last);
+      const bool blocked = in_strip && used > 0 && overlaps(run_first, run_last);
       if (blocked && !std::isnan(angle_sums_[v])) {
         if (straight_through(v, -neg_turn)) {
           frozen.push_back(v);
@@ -860,7 +860,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       }
       if (used == flips.size()) flips.emplace_back();
       Flip& flip = flips[used];
-      if (!make_flip(j, -neg_turn, flip)) {
+      if (!in_strip || !make_flip(j, -neg_turn, run_first, run_last, flip)) {
         frozen.push_back(apices[j].vertex);
         if (stats) ++stats->frozen;
         continue;

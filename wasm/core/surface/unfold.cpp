@@ -38,31 +38,21 @@ void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedSt
     const size_t common = std::min(n, reuse->faces.size());
     while (known < common && reuse->faces[known] == strip[known]) ++known;
   }
-  out.faces = strip;
-  out.corners.resize(n);
-  out.portals.resize(n > 0 ? n - 1 : 0);
+  out.faces.clear(), out.corners.clear(), out.portals.clear();
   if (n == 0) return;
   if (known > 0) {
-    std::copy(reuse->corners.begin(), reuse->corners.begin() + known, out.corners.begin());
-    std::copy(reuse->portals.begin(), reuse->portals.begin() + (known - 1), out.portals.begin());
-  }
-  auto length = [&](int a, int b) { return (mesh.positions[a] - mesh.positions[b]).norm(); };
-  if (known == 0) {
-    known = 1;
+    append_moved(out, *reuse, 0, known, PlaneMotion{});
+  } else {
+    auto length = [&](int a, int b) { return (mesh.positions[a] - mesh.positions[b]).norm(); };
     const auto& t = mesh.triangles[strip[0]];
-    auto& c = out.corners[0];
+    std::array<Vec2, 3> c;
     c[0] = Vec2::Zero();
     c[1] = Vec2(length(t[0], t[1]), 0);
     c[2] = place_left(c[0], c[1], length(t[0], t[2]), length(t[1], t[2]));
+    append_face(mesh, out, strip[0], c);
+    known = 1;
   }
-  for (size_t i = known - 1; i + 1 < n; ++i) {
-    const int f = strip[i];
-    const int k = edge_to(mesh, f, strip[i + 1]);
-    const auto& t = mesh.triangles[f];
-    // t[k] on the right, t[k+1] on the left of travel
-    out.portals[i] = {out.corners[i][(k + 1) % 3], out.corners[i][k], t[(k + 1) % 3], t[k]};
-    lay_across(mesh, f, k, out.corners[i], out.corners[i + 1]);
-  }
+  for (size_t i = known; i < n; ++i) append_laid(mesh, out, strip[i]);
 }
 
 void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf, std::array<Vec2, 3>& cg) {
@@ -108,22 +98,33 @@ PlaneMotion PlaneMotion::between(const std::array<Vec2, 3>& was, const std::arra
   return m;
 }
 
-void append_face(const TriMesh& mesh, UnfoldedStrip& u, int face, const std::array<Vec2, 3>& corners) {
-  if (!u.faces.empty()) {
-    const int f = u.faces.back();
-    const int k = edge_to(mesh, f, face);
-    const auto& t = mesh.triangles[f];
-    const auto& c = u.corners.back();
-    u.portals.push_back({c[(k + 1) % 3], c[k], t[(k + 1) % 3], t[k]});
-  }
+namespace {
+
+// Face `face`, laid at `corners`, entered from u's last face across that face's edge k.
+void append_across(const TriMesh& mesh, UnfoldedStrip& u, int k, int face, const std::array<Vec2, 3>& corners) {
+  const auto& t = mesh.triangles[u.faces.back()];
+  const auto& c = u.corners.back();
+  u.portals.push_back({c[(k + 1) % 3], c[k], t[(k + 1) % 3], t[k]});  // t[k] right, t[k+1] left of travel
   u.faces.push_back(face);
   u.corners.push_back(corners);
 }
 
+}  // namespace
+
+void append_face(const TriMesh& mesh, UnfoldedStrip& u, int face, const std::array<Vec2, 3>& corners) {
+  if (u.faces.empty()) {
+    u.faces.push_back(face);
+    u.corners.push_back(corners);
+    return;
+  }
+  append_across(mesh, u, edge_to(mesh, u.faces.back(), face), face, corners);
+}
+
 void append_laid(const TriMesh& mesh, UnfoldedStrip& u, int face) {
+  const int k = edge_to(mesh, u.faces.back(), face);
   std::array<Vec2, 3> corners;
-  lay_across(mesh, u.faces.back(), edge_to(mesh, u.faces.back(), face), u.corners.back(), corners);
-  append_face(mesh, u, face, corners);
+  lay_across(mesh, u.faces.back(), k, u.corners.back(), corners);
+  append_across(mesh, u, k, face, corners);
 }
 
 void append_moved(UnfoldedStrip& u, const UnfoldedStrip& src, size_t from, size_t to, const PlaneMotion& m) {
