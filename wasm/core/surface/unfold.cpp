@@ -103,8 +103,8 @@ namespace {
 // Face `face`, laid at `corners`, entered from u's last face across that face's edge k.
 void append_across(const TriMesh& mesh, UnfoldedStrip& u, int k, int face, const std::array<Vec2, 3>& corners) {
   const auto& t = mesh.triangles[u.faces.back()];
-  const auto& c = u.corners.back();
-  u.portals.push_back({c[(k + 1) % 3], c[k], t[(k + 1) % 3], t[k]});  // t[k] right, t[k+1] left of travel
+  const int k1 = (k + 1) % 3;
+  u.portals.push_back({t[k1], t[k], static_cast<int8_t>(k1), static_cast<int8_t>(k)});  // t[k] right, t[k+1] left of travel
   u.faces.push_back(face);
   u.corners.push_back(corners);
 }
@@ -131,21 +131,17 @@ void append_moved(UnfoldedStrip& u, const UnfoldedStrip& src, size_t from, size_
   if (from >= to) return;
   const bool portal_in = !u.faces.empty();
   u.faces.insert(u.faces.end(), src.faces.begin() + from, src.faces.begin() + to);
+  u.portals.insert(u.portals.end(), src.portals.begin() + (from - portal_in), src.portals.begin() + (to - 1));
   if (m.identity()) {
     u.corners.insert(u.corners.end(), src.corners.begin() + from, src.corners.begin() + to);
-    u.portals.insert(u.portals.end(), src.portals.begin() + (from - portal_in), src.portals.begin() + (to - 1));
     return;
   }
   for (size_t i = from; i < to; ++i) u.corners.push_back(m(src.corners[i]));
-  for (size_t i = from - portal_in; i + 1 < to; ++i) {
-    const Portal& p = src.portals[i];
-    u.portals.push_back({m(p.left), m(p.right), p.left_vertex, p.right_vertex});
-  }
 }
 
 void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first) {
   if (first == 0 || first >= u.faces.size()) return;
-  Portal& in = u.portals[first - 1];
+  const Portal& in = u.portals[first - 1];
   const int a = in.left_vertex, b = in.right_vertex;
   const auto& before = u.corners[first - 1];
   const Vec2 pa = before[corner_of(mesh, u.faces[first - 1], a)], pb = before[corner_of(mesh, u.faces[first - 1], b)];
@@ -157,11 +153,6 @@ void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first) {
       if (t[k] == b) u.corners[i][k] = pb, shared = true;
     }
     if (!shared) break;
-    Portal& p = u.portals[i - 1];
-    if (p.left_vertex == a) p.left = pa;
-    if (p.left_vertex == b) p.left = pb;
-    if (p.right_vertex == a) p.right = pa;
-    if (p.right_vertex == b) p.right = pb;
   }
 }
 

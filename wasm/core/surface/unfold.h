@@ -8,9 +8,11 @@
 
 namespace splinekit::surface {
 
+// The edge between strip faces i and i+1: its end points are corners of face i (the end points'
+// places are those corners', so moving a layout moves only corners).
 struct Portal {
-  Vec2 left, right;  // the shared edge's end points, left/right of the direction of travel
-  int left_vertex = -1, right_vertex = -1;
+  int left_vertex = -1, right_vertex = -1;  // left/right of the direction of travel
+  int8_t left_corner = 0, right_corner = 0;  // their corners in face i
 };
 
 // A point of a face (barycentrics p.uv) whose corners lie at `c` in the plane.
@@ -25,6 +27,9 @@ struct UnfoldedStrip {
 
   // A point on strip face i in the plane.
   Vec2 map(int i, const MeshPoint& p) const { return on_face(corners[i], p); }
+  // The end points of portal i in the plane.
+  const Vec2& left(int i) const { return corners[i][portals[i].left_corner]; }
+  const Vec2& right(int i) const { return corners[i][portals[i].right_corner]; }
   // A 3D vector in the plane of strip face i, in the plane (and back).
   Vec2 to_plane(const TriMesh& mesh, int i, const Vec3& v) const;
   Vec3 to_space(const TriMesh& mesh, int i, const Vec2& v) const;
