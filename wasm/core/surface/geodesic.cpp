@@ -404,8 +404,8 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
     apices.back().pos = target;
   };
   for (int i = apex_index + 1; i <= n; ++i) {
-    const Vec2 L = i < n ? u.portals[i].left : target;
-    const Vec2 R = i < n ? u.portals[i].right : target;
+    const Vec2 L = i < n ? u.left(i) : target;
+    const Vec2 R = i < n ? u.right(i) : target;
     const int lv = i < n ? u.portals[i].left_vertex : -1;
     const int rv = i < n ? u.portals[i].right_vertex : -1;
     // Right side: tighten when R is left of (or on) apex->right.
@@ -482,8 +482,8 @@ void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vec
     while (j + 1 < apices.size() && apices[j + 1].portal < i) ++j;
     const Vec2& q = apices[j].pos;
     const Vec2 d = apices[j + 1].pos - q;
-    const Vec2& R = u.portals[i].right;
-    const Vec2& L = u.portals[i].left;
+    const Vec2& R = u.right(i);
+    const Vec2& L = u.left(i);
     const double den = cross2(d, L - R);
     double s = std::abs(den) > 0 ? cross2(d, q - R) / den : 0.5;
     if (!(s >= 0)) s = 0;
@@ -609,7 +609,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     const Vec2 &from = apices[j - 1].pos, &to = apices[j + 1].pos;
     const bool v_right = orient(from, to, apices[j].pos) < 0;
     auto blocks = [&](int i) {  // the side vertex of portal i
-      const double o = orient(from, to, left ? unfolded.portals[i].left : unfolded.portals[i].right);
+      const double o = orient(from, to, left ? unfolded.left(i) : unfolded.right(i));
       return v_right ? o < 0 : o > 0;
     };
     int first = flip.first, last = flip.last;
@@ -869,7 +869,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       // A chord spans the faces around the neighbouring apices: look for room before tracing it.
       Room room{0, strip_size() - 1, strip_size() - 1};
       int unused;
-      const bool fits = options_.chords &&
+      const bool fits = options_.chords && -neg_turn > options_.chord_min_turn &&
                         (apices[j - 1].vertex < 0 || run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused)) &&
                         (apices[j + 1].vertex < 0 || run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last)) &&
                         !overlaps(room.p_first, room.q_last);
