@@ -146,10 +146,11 @@ TEST(ShortestPath, StraightensThroughKnownPaths) {
 // blocking stretch of the row at once. The result is the straight segment either way.
 // Straightens the strip through the shortest paths between consecutive `via` points of a 24 x 24
 // grid on the unit square; returns the path's length (flips and frozen vertices in `stats`).
-double straighten_via(const std::vector<Vec2>& via, bool chords, PathStats& stats) {
+double straighten_via(const std::vector<Vec2>& via, bool chords, PathStats& stats, double chord_min_turn = 0.01) {
   const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
   ShortestPathOptions options;
   options.chords = chords;
+  options.chord_min_turn = chord_min_turn;
   GeodesicSolver solver(mesh, options);
   auto at = [&](const Vec2& p) { return testing::point_at(mesh, Vec3(p.x(), p.y(), 0)); };
   std::vector<GeodesicPath> pieces(via.size() - 1);
@@ -182,6 +183,11 @@ TEST(ShortestPath, CrossesManyRowsAlongAChord) {
   EXPECT_LE(with.flips, 30);
   EXPECT_GE(without.flips, 60);
   EXPECT_EQ(with.frozen, 0);
+  // Chords are traced only where the path turns by more than chord_min_turn: with a bound above
+  // every possible turn (π) the straightening makes exactly the flips it makes without chords.
+  PathStats gated;
+  EXPECT_NEAR(straighten_via(via, true, gated, 3.2), 0.8, 1e-9);
+  EXPECT_EQ(gated.flips, without.flips);
 }
 
 TEST(UnfoldStrip, LaysFacesIsometricallyAndReusesACommonStartExactly) {
