@@ -62,8 +62,9 @@ void append_laid(const TriMesh& mesh, UnfoldedStrip& u, int face);
 // Faces [from, to) of `src` moved by m (u's last face is src's face from-1, or u is empty and from 0).
 void append_moved(UnfoldedStrip& u, const UnfoldedStrip& src, size_t from, size_t to, const PlaneMotion& m);
 // Makes the faces from `first` on meet face first-1 exactly at the two vertices they share with it
-// (in every face and portal up to the first face without them): pieces laid or moved separately
-// meet only up to rounding, and the funnel takes a vertex for one point only where it is one.
+// (in every face up to the first face without them; portals read their corners): pieces laid or
+// moved separately meet only up to rounding, and the funnel takes a vertex for one point only where
+// it is one.
 void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first);
 
 // Lays the neighbour of face f across its edge k flat next to f, whose corners lie at `cf`.
