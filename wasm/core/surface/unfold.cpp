@@ -141,10 +141,8 @@ void append_moved(UnfoldedStrip& u, const UnfoldedStrip& src, size_t from, size_
 
 void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first) {
   if (first == 0 || first >= u.faces.size()) return;
-  const Portal& in = u.portals[first - 1];
-  const int a = in.left_vertex, b = in.right_vertex;
-  const auto& before = u.corners[first - 1];
-  const Vec2 pa = before[corner_of(mesh, u.faces[first - 1], a)], pb = before[corner_of(mesh, u.faces[first - 1], b)];
+  const int a = u.portals[first - 1].left_vertex, b = u.portals[first - 1].right_vertex;
+  const Vec2 pa = u.left(static_cast<int>(first) - 1), pb = u.right(static_cast<int>(first) - 1);
   for (size_t i = first; i < u.faces.size(); ++i) {
     const auto& t = mesh.triangles[u.faces[i]];
     bool shared = false;
