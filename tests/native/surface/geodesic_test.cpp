@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
 #include <random>
 
 namespace splinekit::surface {
@@ -39,7 +41,7 @@ TEST(SurfaceMesh, WeldsDropsAndReports) {
   EXPECT_EQ(mesh.report.welded_vertices, 2);
   EXPECT_EQ(mesh.report.unreferenced_vertices, 1);
   EXPECT_EQ(mesh.report.used_vertices, 4);
-  EXPECT_EQ(mesh.adjacency[0][1], 1);  // edge (1, 2) meets the second face
+  EXPECT_GE(edge_to(mesh, mesh.mesh_face[0], mesh.mesh_face[1]), 0);  // edge (1, 2) meets the second face
   EXPECT_EQ(mesh.report.boundary_loops, 1);
   EXPECT_EQ(mesh.report.components, 1);
   EXPECT_EQ(mesh.mesh_vertex[3], mesh.mesh_vertex[1]);
@@ -72,9 +74,74 @@ TEST(SurfaceMesh, ReportsNonManifoldEdgesAndSplitsBowties) {
   EXPECT_EQ(mesh.report.non_manifold_edges, 1);
   // Vertex 5, and vertices 0 and 1 whose faces fall apart once the non-manifold edge is cut.
   EXPECT_EQ(mesh.report.non_manifold_vertices, 3);
-  EXPECT_NE(mesh.triangles[3][0], mesh.triangles[4][0]);  // vertex 5 split per fan
-  EXPECT_EQ(mesh.file_vertex[mesh.triangles[3][0]], 5);
-  EXPECT_EQ(mesh.file_vertex[mesh.triangles[4][0]], 5);
+  // (a flip keeps corner 0)
+  const auto &t3 = mesh.triangles[mesh.mesh_face[3]], &t4 = mesh.triangles[mesh.mesh_face[4]];
+  EXPECT_NE(t3[0], t4[0]);  // vertex 5 split per fan
+  EXPECT_EQ(mesh.file_vertex[t3[0]], 5);
+  EXPECT_EQ(mesh.file_vertex[t4[0]], 5);
+}
+
+TEST(SurfaceMesh, NumbersNeighboursCloseAndKeepsFileIndices) {
+  // A grid whose file lists its faces (and vertices) shuffled, some faces wound the other way.
+  const Arrays grid = testing::planar_grid(32);
+  const int nv = grid.vertices(), nf = grid.faces();
+  std::mt19937 rng(5);
+  std::vector<int> vertex_at_file(nv), face_at_file(nf);  // file index -> grid index
+  std::iota(vertex_at_file.begin(), vertex_at_file.end(), 0);
+  std::iota(face_at_file.begin(), face_at_file.end(), 0);
+  std::shuffle(vertex_at_file.begin(), vertex_at_file.end(), rng);
+  std::shuffle(face_at_file.begin(), face_at_file.end(), rng);
+  std::vector<int> file_of_vertex(nv);
+  for (int i = 0; i < nv; ++i) file_of_vertex[vertex_at_file[i]] = i;
+  Arrays file;
+  for (int i = 0; i < nv; ++i)
+    for (int c = 0; c < 3; ++c) file.positions.push_back(grid.positions[3 * vertex_at_file[i] + c]);
+  for (int i = 0; i < nf; ++i) {
+    int t[3];
+    for (int k = 0; k < 3; ++k) t[k] = file_of_vertex[grid.triangles[3 * face_at_file[i] + k]];
+    if (i % 7 == 0) std::swap(t[1], t[2]);
+    file.triangles.insert(file.triangles.end(), {t[0], t[1], t[2]});
+  }
+  const TriMesh mesh = testing::build(file);
+  ASSERT_EQ(mesh.report.components, 1);
+  // (the winding follows file face 0, one of the reversed ones)
+  EXPECT_EQ(mesh.report.flipped_faces, nf - (nf / 7 + 1));
+
+  // File points mean what the file says, both ways.
+  for (int f = 0; f < nf; ++f) {
+    ASSERT_EQ(mesh.file_face[mesh.mesh_face[f]], f);
+    const MeshPoint p{f, Vec2(0.2, 0.7)};
+    Vec3 expected = Vec3::Zero();
+    const double w[3] = {0.1, 0.2, 0.7};
+    for (int k = 0; k < 3; ++k)
+      expected += w[k] * Vec3(file.positions.data() + 3 * file.triangles[3 * f + k]);
+    EXPECT_NEAR((eval_position(mesh, to_mesh_point(mesh, p)) - expected).norm(), 0, 1e-15) << "file face " << f;
+    const MeshPoint back = to_file_point(mesh, to_mesh_point(mesh, p));
+    EXPECT_EQ(back.face, f);
+    EXPECT_EQ(back.uv, p.uv);
+  }
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    EXPECT_EQ(mesh.positions[v], Vec3(file.positions.data() + 3 * mesh.file_vertex[v]));
+    EXPECT_EQ(mesh.mesh_vertex[mesh.file_vertex[v]], static_cast<int>(v));
+    EXPECT_GE(corner_of(mesh, mesh.vertex_face[v], static_cast<int>(v)), 0);
+  }
+
+  // Neighbours across edges, and the corners of a face, lie close together in mesh order (in the
+  // shuffled file order they are a third of the mesh apart on average).
+  double face_gap = 0, vertex_gap = 0, file_face_gap = 0;
+  int pairs = 0;
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int g = mesh.adjacency[f][k];
+      if (g < 0) continue;
+      face_gap += std::abs(f - g);
+      file_face_gap += std::abs(mesh.file_face[f] - mesh.file_face[g]);
+      vertex_gap += std::abs(mesh.triangles[f][k] - mesh.triangles[f][(k + 1) % 3]);
+      ++pairs;
+    }
+  EXPECT_GT(file_face_gap / pairs, nf / 4.0);
+  EXPECT_LT(face_gap / pairs, nf / 40.0);
+  EXPECT_LT(vertex_gap / pairs, nv / 40.0);
 }
 
 TEST(SurfaceMesh, RejectsBadInputNamingIt) {

@@ -29,6 +29,76 @@ void flip_face(std::array<int, 3>& t, std::array<int, 3>& adj) {
 
 bool is_degenerate(const std::array<int, 3>& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
 
+// Bits 0, 3, 6, ... of the result are those of x (21 bits): one axis of a 3D Morton code.
+uint64_t spread_bits(uint64_t x) {
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x1f00000000ffffULL;
+  x = (x | x << 16) & 0x1f0000ff0000ffULL;
+  x = (x | x << 8) & 0x100f00f00f00f00fULL;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+  x = (x | x << 2) & 0x1249249249249249ULL;
+  return x;
+}
+
+// Renumbers the faces in the Morton order of their centroids and the vertices in the order the
+// faces first use them, so that faces close on the surface are mostly close in memory too. Paths
+// walk from face to face, and each step reads the next face's corners, neighbours and vertex
+// positions: files list faces in whatever order their maker left them (a subdivided mesh puts each
+// coarse face's children together but a vertex's coarse and fine neighbours far apart). Measured on
+// random whole-surface curves (wasm, each traced by both builds in turn): 5% less trace time on
+// spot_loop2_369k, 9.5% on nefertiti; faces and vertices contribute about equally.
+void order_for_locality(TriMesh& mesh, const Vec3& lo, double extent) {
+  const int nf = static_cast<int>(mesh.triangles.size()), nv = static_cast<int>(mesh.positions.size());
+  std::vector<std::pair<uint64_t, int>> keyed(nf);
+  const double to_grid = extent > 0 ? double((1 << 21) - 1) / extent : 0;
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = mesh.triangles[f];
+    const Vec3 c = ((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3 - lo) * to_grid;
+    auto axis = [](double x) { return spread_bits(static_cast<uint64_t>(std::clamp(x, 0.0, double((1 << 21) - 1)))); };
+    keyed[f] = {axis(c.x()) | axis(c.y()) << 1 | axis(c.z()) << 2, f};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<int> new_face(nf), new_vertex(nv, -1);
+  mesh.file_face.resize(nf);
+  int next_vertex = 0;
+  for (int i = 0; i < nf; ++i) {
+    const int f = keyed[i].second;
+    new_face[f] = i;
+    mesh.file_face[i] = f;
+    for (int v : mesh.triangles[f])
+      if (new_vertex[v] < 0) new_vertex[v] = next_vertex++;
+  }
+  for (int& v : new_vertex)
+    if (v < 0) v = next_vertex++;
+
+  std::vector<std::array<int, 3>> triangles(nf), adjacency(nf);
+  std::vector<uint8_t> flipped(nf);
+  for (int i = 0; i < nf; ++i) {
+    const int f = mesh.file_face[i];
+    for (int k = 0; k < 3; ++k) {
+      triangles[i][k] = new_vertex[mesh.triangles[f][k]];
+      adjacency[i][k] = mesh.adjacency[f][k] >= 0 ? new_face[mesh.adjacency[f][k]] : -1;
+    }
+    flipped[i] = mesh.flipped[f];
+  }
+  mesh.triangles.swap(triangles);
+  mesh.adjacency.swap(adjacency);
+  mesh.flipped.swap(flipped);
+  std::vector<Vec3> positions(nv);
+  std::vector<int> vertex_face(nv), file_vertex(nv);
+  for (int v = 0; v < nv; ++v) {
+    positions[new_vertex[v]] = mesh.positions[v];
+    vertex_face[new_vertex[v]] = new_face[mesh.vertex_face[v]];
+    file_vertex[new_vertex[v]] = mesh.file_vertex[v];
+  }
+  mesh.positions.swap(positions);
+  mesh.vertex_face.swap(vertex_face);
+  mesh.file_vertex.swap(file_vertex);
+  for (int& v : mesh.mesh_vertex)
+    if (v >= 0) v = new_vertex[v];
+  mesh.mesh_face = std::move(new_face);
+}
+
 }  // namespace
 
 MeshStatus build_mesh(const double* positions, int num_vertices, const int* triangles, int num_faces, TriMesh& out,
@@ -268,6 +338,7 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
     hi = hi.cwiseMax(p);
   }
   mesh.scale = std::max((hi - lo).norm(), 1e-300);
+  order_for_locality(mesh, lo, (hi - lo).maxCoeff());
   report.used_vertices = static_cast<int>(mesh.positions.size());
   out = std::move(mesh);
   return MeshStatus::kOk;
@@ -277,7 +348,7 @@ size_t mesh_bytes(const TriMesh& m) {
   return m.positions.capacity() * sizeof(Vec3) + m.triangles.capacity() * sizeof(m.triangles[0]) +
          m.adjacency.capacity() * sizeof(m.adjacency[0]) + (m.vertex_face.capacity() + m.file_vertex.capacity() +
                                                             m.mesh_vertex.capacity()) * sizeof(int) +
-         m.flipped.capacity();
+         m.flipped.capacity() + (m.file_face.capacity() + m.mesh_face.capacity()) * sizeof(int);
 }
 
 Vec3 eval_position(const TriMesh& mesh, const MeshPoint& p) {
@@ -293,11 +364,15 @@ Vec3 face_normal(const TriMesh& mesh, int face) {
 }
 
 MeshPoint to_mesh_point(const TriMesh& mesh, const MeshPoint& p) {
-  if (mesh.flipped[p.face]) return {p.face, Vec2(p.uv.y(), p.uv.x())};
-  return p;
+  const int f = mesh.mesh_face[p.face];
+  if (mesh.flipped[f]) return {f, Vec2(p.uv.y(), p.uv.x())};
+  return {f, p.uv};
 }
 
-MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& p) { return to_mesh_point(mesh, p); }
+MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& p) {
+  if (mesh.flipped[p.face]) return {mesh.file_face[p.face], Vec2(p.uv.y(), p.uv.x())};
+  return {mesh.file_face[p.face], p.uv};
+}
 
 MeshPoint vertex_point(const TriMesh& mesh, int vertex) {
   const int f = mesh.vertex_face[vertex];

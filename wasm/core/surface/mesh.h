@@ -5,9 +5,11 @@
 // Everything here is plain data over flat arrays. Two index spaces exist:
 //   - file space: vertex and face indices as in the file the user opened (what the API speaks);
 //   - mesh space: after welding duplicate positions, dropping unreferenced vertices, orienting faces
-//     consistently and splitting non-manifold vertices (what the algorithms use).
-// Faces keep their file index; only their winding may be flipped (`flipped[f]`), which swaps the
-// barycentric coordinates of points on them (to_mesh_point / to_file_point).
+//     consistently and splitting non-manifold vertices, faces and vertices renumbered so that
+//     neighbours on the surface are mostly neighbours in memory (what the algorithms use).
+// Every file face is a mesh face (file_face / mesh_face map between the two); its winding may be
+// flipped (`flipped[f]`), which swaps the barycentric coordinates of points on it (to_mesh_point /
+// to_file_point).
 #pragma once
 
 #include <Eigen/Core>
@@ -49,12 +51,14 @@ struct MeshReport {
 
 struct TriMesh {
   std::vector<Vec3> positions;                 // #V mesh-space vertices
-  std::vector<std::array<int, 3>> triangles;   // #F faces (file order), consistently wound
+  std::vector<std::array<int, 3>> triangles;   // #F faces (mesh order), consistently wound
   std::vector<std::array<int, 3>> adjacency;   // face across edge (t[k], t[k+1]); -1 on a boundary
   std::vector<int> vertex_face;                // #V one face of each vertex; a fan's first face on a boundary
   std::vector<int> file_vertex;                // #V mesh vertex -> file vertex
   std::vector<int> mesh_vertex;                // #file vertices: file vertex -> mesh vertex (-1 unused)
-  std::vector<uint8_t> flipped;                // #F 1 when the face's winding was reversed
+  std::vector<int> file_face;                  // #F mesh face -> file face
+  std::vector<int> mesh_face;                  // #F file face -> mesh face
+  std::vector<uint8_t> flipped;                // #F 1 when the (mesh) face's winding was reversed
   double scale = 1;                            // bounding-box diagonal
   MeshReport report;
 };
@@ -77,7 +81,7 @@ Vec3 face_normal(const TriMesh& mesh, int face);  // unit (zero for a degenerate
 inline Eigen::Vector3d weights(const MeshPoint& p) { return {1 - p.uv.x() - p.uv.y(), p.uv.x(), p.uv.y()}; }
 inline MeshPoint from_weights(int face, const Eigen::Vector3d& w) { return {face, Vec2(w[1], w[2])}; }
 
-// File space <-> mesh space (the winding of flipped faces swaps u and v).
+// File space <-> mesh space (the face renumbered; the winding of flipped faces swaps u and v).
 MeshPoint to_mesh_point(const TriMesh& mesh, const MeshPoint& file_point);
 MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& mesh_point);
 // A mesh vertex as a point on its vertex_face.
