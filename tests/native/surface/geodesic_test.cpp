@@ -330,6 +330,34 @@ TEST(UnfoldStrip, PiecesMovedRigidlyAndJoinedMatchAFreshLayout) {
   }
 }
 
+TEST(UnfoldStrip, LaysPointsOfSpaceInAFacesPlane) {
+  // On a plane a strip's layout is a rigid motion of the mesh, so any point of the mesh, however
+  // far along the strip, lands where the motion takes it, whichever face of the strip lays it.
+  const TriMesh plane = testing::build(testing::planar_grid(12));
+  GeodesicSolver solver(plane);
+  GeodesicPath path;
+  ASSERT_TRUE(solver.shortest_path(testing::point_at(plane, Vec3(0.05, 0.1, 0)), testing::point_at(plane, Vec3(0.93, 0.88, 0)), path));
+  ASSERT_GE(path.strip.size(), 10u);
+  UnfoldedStrip u;
+  unfold_strip(plane, path.strip, u);
+  const PlaneMotion motion = PlaneMotion::between(
+      {Vec2(plane.positions[plane.triangles[u.faces[0]][0]].head<2>()), Vec2(plane.positions[plane.triangles[u.faces[0]][1]].head<2>()),
+       Vec2(plane.positions[plane.triangles[u.faces[0]][2]].head<2>())},
+      u.corners[0]);
+  for (const Vec3& x : {Vec3(0.05, 0.1, 0), Vec3(0.5, 0.5, 0), Vec3(0.93, 0.88, 0), Vec3(0.2, 0.9, 0)}) {
+    for (size_t i : {size_t{0}, u.faces.size() / 2, u.faces.size() - 1}) {
+      Vec2 at;
+      ASSERT_TRUE(lay_point(plane, u.faces[i], u.corners[i], x, at));
+      EXPECT_NEAR((at - motion(Vec2(x.head<2>()))).norm(), 0, 1e-12) << "face " << i;
+    }
+  }
+  // Off the plane: the nearest point of the plane, i.e. the height is dropped.
+  Vec2 lifted, dropped;
+  ASSERT_TRUE(lay_point(plane, u.faces[3], u.corners[3], Vec3(0.4, 0.6, 0.7), lifted));
+  ASSERT_TRUE(lay_point(plane, u.faces[3], u.corners[3], Vec3(0.4, 0.6, 0), dropped));
+  EXPECT_NEAR((lifted - dropped).norm(), 0, 1e-12);
+}
+
 TEST(ShortestPath, IsTheFunnelPathOfItsOwnStrip) {
   // Phase (iii) lays out its trial strips from the current one and takes up the current funnel path
   // where the strips agree. Whatever it kept, the path it returns must be the one the funnel finds

@@ -670,9 +670,11 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   // straight line from the neighbouring apex p to the other one, q, in the plane of the strip, and
   // follows it across the mesh from p, laying each face it enters flat (a straightest geodesic from
   // p aimed at q), until a face holds q. Where the surface between turned the line, it aims once
-  // more at where those faces put q. The strip then runs around p from its faces there to the line,
+  // more at where those faces put q, or, when the line passed q without meeting it, at where q
+  // projects into the plane of the face where it did (a long chord over a curved region drifts by
+  // more than a face). The strip then runs around p from its faces there to the line,
   // along the line, and around q (on the side the line passes it) to its faces there. When the line
-  // meets a boundary or a vertex, misses q, or its faces put q too far for the path to get shorter,
+  // meets a boundary or a vertex, misses q twice, or its faces put q too far for the path to get shorter,
   // the flip is the semi-star (and zipper) instead; so it is from then on for a vertex whose chord
   // did not shorten the path.
   static thread_local std::vector<int> no_chord;
@@ -712,8 +714,16 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       laid.push_back(cf);
       return true;
     };
-    // From p along direction d until a face holds q (the end face for the end point); q's place there.
+    // From p along direction d until a face holds q (the end face for the end point): kReached, and
+    // q's place in the plane there. When the line passes q without meeting it, kPassed, and q's
+    // place estimated from the face where it did: the point of that face's plane nearest to q, laid
+    // with the face (exact for q on the face, off by the surface's turning between them otherwise).
+    enum Trace { kFailed, kReached, kPassed };
     Vec2 at;
+    auto passed = [&]() {
+      const Vec3 x = q.vertex >= 0 ? mesh_.positions[q.vertex] : eval_position(mesh_, end);
+      return lay_point(mesh_, f, cf, x, at) ? kPassed : kFailed;
+    };
     auto trace = [&]() {
       other.clear();
       laid.clear();
@@ -729,7 +739,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         for (int steps = 0;; ++steps) {
           const int k = corner_of(mesh_, f, p.vertex);
           if (side(cf[(k + 1) % 3]) < 0 && side(cf[(k + 2) % 3]) > 0) break;
-          if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == strip[first]) return false;
+          if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == strip[first]) return kFailed;
         }
       }
       // Along the line: it leaves each face through the edge from a corner on its right to one on
@@ -740,22 +750,24 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         int e = -1;
         for (int k = 0; k < 3; ++k)
           if (sides[k] < 0 && sides[(k + 1) % 3] > 0) e = k;
-        if (e < 0 || steps > 4 * n) return false;
-        if ((cf[e] - o).dot(d) > reach && (cf[(e + 1) % 3] - o).dot(d) > reach) return false;  // past q
-        if (!step(e)) return false;
+        if (e < 0 || steps > 4 * n) return kFailed;
+        if ((cf[e] - o).dot(d) > reach && (cf[(e + 1) % 3] - o).dot(d) > reach) return passed();
+        if (!step(e)) return kFailed;
       }
       at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)] : on_face(cf, end);
-      return true;
+      return kReached;
     };
     before.clear();
-    if (!trace()) return false;
-    // The surface between turned the line: aim again where the line's faces put q.
-    if (std::abs(cross2(d, at - o)) > 1e-3 * d.squaredNorm()) {
+    Trace traced = trace();
+    // The surface between turned the line: aim again where the line's faces put q (once).
+    if (traced == kPassed || (traced == kReached && std::abs(cross2(d, at - o)) > 1e-3 * d.squaredNorm())) {
+      if (!((at - o).squaredNorm() > 0)) return false;
       d = at - o;
       before.swap(other);
       laid_before.swap(laid);
-      if (!trace()) return false;
+      traced = trace();
     }
+    if (traced != kReached) return false;
     // The path from p to q through the line's faces is at least |at - o| long, so the chord cannot
     // help unless that beats the way by v.
     if ((at - o).norm() >= (apices[j].pos - p.pos).norm() + (q.pos - apices[j].pos).norm()) return false;

@@ -80,6 +80,19 @@ void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf
   cg[kc] = pb + (w.dot(e) * inv) * edge + (w.cross(e).norm() * inv) * Vec2(-edge.y(), edge.x());
 }
 
+bool lay_point(const TriMesh& mesh, int face, const std::array<Vec2, 3>& corners, const Vec3& x, Vec2& out) {
+  // x - p0 = a (p1 - p0) + b (p2 - p0) + (normal part), by the normal equations of the edges.
+  const auto& t = mesh.triangles[face];
+  const Vec3 e1 = mesh.positions[t[1]] - mesh.positions[t[0]], e2 = mesh.positions[t[2]] - mesh.positions[t[0]];
+  const Vec3 w = x - mesh.positions[t[0]];
+  const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2), w1 = w.dot(e1), w2 = w.dot(e2);
+  const double det = g11 * g22 - g12 * g12;
+  if (!(det > 0)) return false;
+  const double a = (w1 * g22 - w2 * g12) / det, b = (w2 * g11 - w1 * g12) / det;
+  out = corners[0] + a * (corners[1] - corners[0]) + b * (corners[2] - corners[0]);
+  return true;
+}
+
 PlaneMotion PlaneMotion::between(const std::array<Vec2, 3>& was, const std::array<Vec2, 3>& now) {
   // From the face's longest edge at corner 0 (its length is the same in both layouts).
   const int k = (was[1] - was[0]).squaredNorm() >= (was[2] - was[0]).squaredNorm() ? 1 : 2;

@@ -67,6 +67,11 @@ void append_moved(UnfoldedStrip& u, const UnfoldedStrip& src, size_t from, size_
 // it is one.
 void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first);
 
+// Where the point x of space lies in the plane of face `face` laid at `corners`: the point of the
+// face's plane nearest to x, laid with the face (x itself for a point of the face). False for a
+// degenerate face.
+bool lay_point(const TriMesh& mesh, int face, const std::array<Vec2, 3>& corners, const Vec3& x, Vec2& out);
+
 // Lays the neighbour of face f across its edge k flat next to f, whose corners lie at `cf`.
 void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf, std::array<Vec2, 3>& cg);
 
