@@ -157,6 +157,35 @@ TEST(SurfaceMesh, RejectsBadInputNamingIt) {
   EXPECT_NE(error.find("face 0"), std::string::npos);
 }
 
+TEST(SearchGraph, NumbersEveryEdgeOnceFromBothSides) {
+  // A grid (boundary edges) and a closed mesh: both sides of an edge give its number, every number
+  // below graph.edges names one edge, and the edge's half-edge gives the number back.
+  for (const TriMesh& mesh : {testing::build(testing::planar_grid(9)), testing::build(testing::cube(3))}) {
+    GeodesicSolver solver(mesh);
+    const DualGraph& graph = solver.graph();
+    int boundary = 0, interior = 0;
+    std::vector<int> seen(graph.edges, 0);
+    for (int f = 0; f < graph.faces; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int e = graph.halfedge_edge[3 * f + k];
+        ASSERT_GE(e, 0);
+        ASSERT_LT(e, graph.edges);
+        ++seen[e];
+        const int g = mesh.adjacency[f][k];
+        if (g < 0) {
+          ++boundary;
+        } else {
+          ++interior;
+          EXPECT_EQ(graph.halfedge_edge[3 * g + edge_to(mesh, g, f)], e);
+        }
+        const int h = graph.edge_halfedge[e];
+        EXPECT_EQ(graph.halfedge_edge[h], e);
+      }
+    EXPECT_EQ(graph.edges, boundary + interior / 2);
+    for (int e = 0; e < graph.edges; ++e) EXPECT_EQ(seen[e], mesh.adjacency[graph.edge_halfedge[e] / 3][graph.edge_halfedge[e] % 3] < 0 ? 1 : 2) << "edge " << e;
+  }
+}
+
 TEST(ShortestPath, IsTheStraightSegmentOnAPlane) {
   const TriMesh mesh = testing::build(testing::planar_grid(24));
   GeodesicSolver solver(mesh);
