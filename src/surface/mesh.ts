@@ -2,7 +2,8 @@
  * A triangle mesh to draw curves on (b/Surf §5.1), held in the wasm core with its adjacency and
  * search graph, and the geodesic primitives over it. Indices and barycentric coordinates always
  * refer to the file's vertex and face order, whatever the core repaired inside (welded duplicate
- * positions, dropped unused vertices, re-oriented faces, split non-manifold vertices).
+ * positions, dropped unused vertices, re-oriented faces, split non-manifold vertices, faces and
+ * vertices renumbered so that neighbours on the surface are neighbours in memory).
  */
 import { core } from '../core/module.js';
 import { SplinekitError, checkStatus } from '../core/errors.js';
