@@ -672,7 +672,8 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   // p aimed at q), until a face holds q. Where the surface between turned the line, it aims once
   // more at where those faces put q, or, when the line passed q without meeting it, at where q
   // projects into the plane of the face where it did (a long chord over a curved region drifts by
-  // more than a face). The strip then runs around p from its faces there to the line,
+  // more than a face); the second walk keeps the first as far as the new line crosses the same
+  // edges. The strip then runs around p from its faces there to the line,
   // along the line, and around q (on the side the line passes it) to its faces there. When the line
   // meets a boundary or a vertex, misses q twice, or its faces put q too far for the path to get shorter,
   // the flip is the semi-star (and zipper) instead; so it is from then on for a vertex whose chord
@@ -689,21 +690,20 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     const Vec2 o = p.pos;
     Vec2 d = q.pos - p.pos;
     auto side = [&](const Vec2& c) { return cross2(d, c - o); };  // > 0: left of the line
-    // The faces the walk entered and where it laid them; a second aim takes the first one's layout
-    // as long as it enters the same faces (`known`: how many so far, or -1 once it left them).
-    static thread_local std::vector<int> other, before;
-    static thread_local std::vector<std::array<Vec2, 3>> laid, laid_before;
+    // The walk: the faces it entered and where it laid them, how many of them it entered turning
+    // around p, and the edge it left each face by along the line.
+    static thread_local std::vector<int> other;
+    static thread_local std::vector<std::array<Vec2, 3>> laid;
+    static thread_local std::vector<int8_t> exits;
+    size_t around = 0;
     int first = 0, f = strip[0];
     int on_strip = 0;  // strip index of f while the walk follows the strip (its layout is known), else -1
-    int known = -1;
     std::array<Vec2, 3> cf, cg;
     auto step = [&](int e) {  // into the face across edge e of f
       const int g = mesh_.adjacency[f][e];
       if (g < 0) return false;
       on_strip = on_strip >= 0 && on_strip + 1 < n && strip[on_strip + 1] == g ? on_strip + 1 : -1;
-      if (known >= 0 && known < static_cast<int>(before.size()) && before[known] == g) {
-        cf = laid_before[known++];
-      } else if (known = -1; on_strip >= 0) {
+      if (on_strip >= 0) {
         cf = unfolded.corners[on_strip];
       } else {
         lay_across(mesh_, f, e, cf, cg);
@@ -724,13 +724,12 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       const Vec3 x = q.vertex >= 0 ? mesh_.positions[q.vertex] : eval_position(mesh_, end);
       return lay_point(mesh_, f, cf, x, at) ? kPassed : kFailed;
     };
-    auto trace = [&]() {
-      other.clear();
-      laid.clear();
-      known = before.empty() ? -1 : 0;
+    // Around p, on from its first strip face, to the face whose corner holds the line.
+    auto turn_around_p = [&]() {
+      other.clear(), laid.clear(), exits.clear();
       first = 0, f = strip[0], on_strip = 0;
       cf = unfolded.corners[0];
-      if (p.vertex >= 0) {  // around p, on from its first strip face, to the face whose corner holds the line
+      if (p.vertex >= 0) {
         first = room.p_first;
         const bool left = on_left(p);
         f = strip[first];
@@ -739,33 +738,66 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         for (int steps = 0;; ++steps) {
           const int k = corner_of(mesh_, f, p.vertex);
           if (side(cf[(k + 1) % 3]) < 0 && side(cf[(k + 2) % 3]) > 0) break;
-          if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == strip[first]) return kFailed;
+          if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == strip[first]) return false;
         }
       }
-      // Along the line: it leaves each face through the edge from a corner on its right to one on
-      // its left.
+      around = other.size();
+      return true;
+    };
+    // Along the line from f on: it leaves each face through the edge from a corner on its right to
+    // one on its left.
+    auto along = [&]() {
       const double reach = 1.05 * d.squaredNorm();
-      for (int steps = 0; q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip.back(); ++steps) {
+      for (size_t steps = exits.size(); q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip.back(); ++steps) {
         const double sides[3] = {side(cf[0]), side(cf[1]), side(cf[2])};
         int e = -1;
         for (int k = 0; k < 3; ++k)
           if (sides[k] < 0 && sides[(k + 1) % 3] > 0) e = k;
-        if (e < 0 || steps > 4 * n) return kFailed;
+        if (e < 0 || steps > 4 * static_cast<size_t>(n)) return kFailed;
         if ((cf[e] - o).dot(d) > reach && (cf[(e + 1) % 3] - o).dot(d) > reach) return passed();
+        exits.push_back(static_cast<int8_t>(e));
         if (!step(e)) return kFailed;
       }
       at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)] : on_face(cf, end);
       return kReached;
     };
-    before.clear();
-    Trace traced = trace();
+    // The walk along a new d: as far as it takes the same way as the last one (the same turn around
+    // p, the same exits from the same faces, laid alike), the last one's; on from where they part.
+    auto walk_again = [&]() {
+      const std::array<Vec2, 3>* c = &unfolded.corners[first];
+      size_t s = 0;
+      if (p.vertex >= 0) {
+        for (int g = strip[first];; ++s) {
+          const int k = corner_of(mesh_, g, p.vertex);
+          const bool holds = side((*c)[(k + 1) % 3]) < 0 && side((*c)[(k + 2) % 3]) > 0;
+          if (s == around && holds) break;
+          if (s == around || holds) return turn_around_p() ? along() : kFailed;
+          g = other[s], c = &laid[s];
+        }
+      }
+      const double reach = 1.05 * d.squaredNorm();
+      size_t m = 0;
+      for (; m < exits.size(); ++m) {
+        const double sides[3] = {side((*c)[0]), side((*c)[1]), side((*c)[2])};
+        int e = -1;
+        for (int k = 0; k < 3; ++k)
+          if (sides[k] < 0 && sides[(k + 1) % 3] > 0) e = k;
+        if (e != exits[m] || (((*c)[e] - o).dot(d) > reach && ((*c)[(e + 1) % 3] - o).dot(d) > reach)) break;
+        c = &laid[s++];
+      }
+      cf = *c;
+      other.resize(s), laid.resize(s), exits.resize(m);
+      f = s == 0 ? strip[first] : other[s - 1];
+      on_strip = first;
+      for (int g : other) on_strip = on_strip >= 0 && on_strip + 1 < n && strip[on_strip + 1] == g ? on_strip + 1 : -1;
+      return along();
+    };
+    Trace traced = turn_around_p() ? along() : kFailed;
     // The surface between turned the line: aim again where the line's faces put q (once).
     if (traced == kPassed || (traced == kReached && std::abs(cross2(d, at - o)) > 1e-3 * d.squaredNorm())) {
       if (!((at - o).squaredNorm() > 0)) return false;
       d = at - o;
-      before.swap(other);
-      laid_before.swap(laid);
-      traced = trace();
+      traced = walk_again();
     }
     if (traced != kReached) return false;
     // The path from p to q through the line's faces is at least |at - o| long, so the chord cannot
