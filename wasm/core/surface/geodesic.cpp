@@ -744,17 +744,26 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       around = other.size();
       return true;
     };
-    // Along the line from f on: it leaves each face through the edge from a corner on its right to
-    // one on its left.
-    auto along = [&]() {
+    // Along the line, a face laid at c is left through the edge from a corner on the line's right
+    // to one on its left (-1: none, the line meets a corner); the line is past q when both ends of
+    // that edge lie beyond q along it.
+    auto exit_edge = [&](const std::array<Vec2, 3>& c) {
+      const double sides[3] = {side(c[0]), side(c[1]), side(c[2])};
+      int e = -1;
+      for (int k = 0; k < 3; ++k)
+        if (sides[k] < 0 && sides[(k + 1) % 3] > 0) e = k;
+      return e;
+    };
+    auto past_q = [&](const std::array<Vec2, 3>& c, int e) {
       const double reach = 1.05 * d.squaredNorm();
+      return (c[e] - o).dot(d) > reach && (c[(e + 1) % 3] - o).dot(d) > reach;
+    };
+    // Along the line from f on.
+    auto along = [&]() {
       for (size_t steps = exits.size(); q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip.back(); ++steps) {
-        const double sides[3] = {side(cf[0]), side(cf[1]), side(cf[2])};
-        int e = -1;
-        for (int k = 0; k < 3; ++k)
-          if (sides[k] < 0 && sides[(k + 1) % 3] > 0) e = k;
+        const int e = exit_edge(cf);
         if (e < 0 || steps > 4 * static_cast<size_t>(n)) return kFailed;
-        if ((cf[e] - o).dot(d) > reach && (cf[(e + 1) % 3] - o).dot(d) > reach) return passed();
+        if (past_q(cf, e)) return passed();
         exits.push_back(static_cast<int8_t>(e));
         if (!step(e)) return kFailed;
       }
@@ -775,16 +784,8 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
           g = other[s], c = &laid[s];
         }
       }
-      const double reach = 1.05 * d.squaredNorm();
       size_t m = 0;
-      for (; m < exits.size(); ++m) {
-        const double sides[3] = {side((*c)[0]), side((*c)[1]), side((*c)[2])};
-        int e = -1;
-        for (int k = 0; k < 3; ++k)
-          if (sides[k] < 0 && sides[(k + 1) % 3] > 0) e = k;
-        if (e != exits[m] || (((*c)[e] - o).dot(d) > reach && ((*c)[(e + 1) % 3] - o).dot(d) > reach)) break;
-        c = &laid[s++];
-      }
+      for (; m < exits.size() && exit_edge(*c) == exits[m] && !past_q(*c, exits[m]); ++m) c = &laid[s++];
       cf = *c;
       other.resize(s), laid.resize(s), exits.resize(m);
       f = s == 0 ? strip[first] : other[s - 1];
