@@ -673,11 +673,11 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
   // more at where those faces put q, or, when the line passed q without meeting it, at where q
   // projects into the plane of the face where it did (a long chord over a curved region drifts by
   // more than a face); the second walk keeps the first as far as the new line crosses the same
-  // edges. The strip then runs around p from its faces there to the line,
-  // along the line, and around q (on the side the line passes it) to its faces there. When the line
-  // meets a boundary or a vertex, misses q twice, or its faces put q too far for the path to get shorter,
-  // the flip is the semi-star (and zipper) instead; so it is from then on for a vertex whose chord
-  // did not shorten the path.
+  // edges. The strip then runs around p from its faces there to the line, along the line, and
+  // around q (on the side the line passes it) to its faces there. When the line meets a boundary or
+  // a vertex, misses q twice, or its faces put q too far for the path to get shorter, the flip is
+  // the semi-star (and zipper) instead; so it is from then on for a vertex whose chord did not
+  // shorten the path.
   static thread_local std::vector<int> no_chord;
   no_chord.clear();
   // `room`: the strip faces from p's first around p to q's last around q (q_first: its first).

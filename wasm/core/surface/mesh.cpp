@@ -50,11 +50,12 @@ uint64_t spread_bits(uint64_t x) {
 void order_for_locality(TriMesh& mesh, const Vec3& lo, double extent) {
   const int nf = static_cast<int>(mesh.triangles.size()), nv = static_cast<int>(mesh.positions.size());
   std::vector<std::pair<uint64_t, int>> keyed(nf);
-  const double to_grid = extent > 0 ? double((1 << 21) - 1) / extent : 0;
+  constexpr double kCells = (1 << 21) - 1;  // per axis
+  const double to_grid = extent > 0 ? kCells / extent : 0;
+  auto axis = [&](double x) { return spread_bits(static_cast<uint64_t>(std::clamp(x, 0.0, kCells))); };
   for (int f = 0; f < nf; ++f) {
     const auto& t = mesh.triangles[f];
     const Vec3 c = ((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3 - lo) * to_grid;
-    auto axis = [](double x) { return spread_bits(static_cast<uint64_t>(std::clamp(x, 0.0, double((1 << 21) - 1)))); };
     keyed[f] = {axis(c.x()) | axis(c.y()) << 1 | axis(c.z()) << 2, f};
   }
   std::sort(keyed.begin(), keyed.end());
