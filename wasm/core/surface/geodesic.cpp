@@ -699,10 +699,12 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     int first = 0, f = strip[0];
     int on_strip = 0;  // strip index of f while the walk follows the strip (its layout is known), else -1
     std::array<Vec2, 3> cf, cg;
+    // Where the walk is on the strip after entering face g from strip face `at` (-1: off it).
+    auto follow_strip = [&](int at, int g) { return at >= 0 && at + 1 < n && strip[at + 1] == g ? at + 1 : -1; };
     auto step = [&](int e) {  // into the face across edge e of f
       const int g = mesh_.adjacency[f][e];
       if (g < 0) return false;
-      on_strip = on_strip >= 0 && on_strip + 1 < n && strip[on_strip + 1] == g ? on_strip + 1 : -1;
+      on_strip = follow_strip(on_strip, g);
       if (on_strip >= 0) {
         cf = unfolded.corners[on_strip];
       } else {
@@ -724,6 +726,11 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       const Vec3 x = q.vertex >= 0 ? mesh_.positions[q.vertex] : eval_position(mesh_, end);
       return lay_point(mesh_, f, cf, x, at) ? kPassed : kFailed;
     };
+    // Whether the line leaves p through face g laid at c (its corner at p holds the line).
+    auto leaves_p = [&](int g, const std::array<Vec2, 3>& c) {
+      const int k = corner_of(mesh_, g, p.vertex);
+      return side(c[(k + 1) % 3]) < 0 && side(c[(k + 2) % 3]) > 0;
+    };
     // Around p, on from its first strip face, to the face whose corner holds the line.
     auto turn_around_p = [&]() {
       other.clear(), laid.clear(), exits.clear();
@@ -735,9 +742,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
         f = strip[first];
         cf = unfolded.corners[first];
         on_strip = first;
-        for (int steps = 0;; ++steps) {
-          const int k = corner_of(mesh_, f, p.vertex);
-          if (side(cf[(k + 1) % 3]) < 0 && side(cf[(k + 2) % 3]) > 0) break;
+        for (int steps = 0; !leaves_p(f, cf); ++steps) {
           if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == strip[first]) return false;
         }
       }
@@ -777,8 +782,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       size_t s = 0;
       if (p.vertex >= 0) {
         for (int g = strip[first];; ++s) {
-          const int k = corner_of(mesh_, g, p.vertex);
-          const bool holds = side((*c)[(k + 1) % 3]) < 0 && side((*c)[(k + 2) % 3]) > 0;
+          const bool holds = leaves_p(g, *c);
           if (s == around && holds) break;
           if (s == around || holds) return turn_around_p() ? along() : kFailed;
           g = other[s], c = &laid[s];
@@ -790,7 +794,7 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
       other.resize(s), laid.resize(s), exits.resize(m);
       f = s == 0 ? strip[first] : other[s - 1];
       on_strip = first;
-      for (int g : other) on_strip = on_strip >= 0 && on_strip + 1 < n && strip[on_strip + 1] == g ? on_strip + 1 : -1;
+      for (int g : other) on_strip = follow_strip(on_strip, g);
       return along();
     };
     Trace traced = turn_around_p() ? along() : kFailed;
@@ -820,8 +824,8 @@ void GeodesicSolver::straighten(const MeshPoint& a, const MeshPoint& b, std::vec
     if (!other.empty() && other.back() == strip[last]) other.pop_back(), laid.pop_back();
     if (last <= first) return false;
     flip.first = first, flip.last = last;
-    flip.other.assign(other.begin(), other.end());
-    flip.laid.assign(laid.begin(), laid.end());
+    flip.other.swap(other);  // (the walk's buffers are scratch: the next walk clears them)
+    flip.laid.swap(laid);
     flip.chord = true;
     return true;
   };

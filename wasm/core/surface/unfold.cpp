@@ -28,6 +28,18 @@ void face_frame(const TriMesh& mesh, int face, Vec3& origin, Vec3& x, Vec3& y) {
   y = n.norm() > 0 ? Vec3(n.normalized().cross(x)) : x.unitOrthogonal();
 }
 
+// A 3D vector in the plane of `face`, in the plane where the face is laid at `corners`: its face
+// frame coordinates, turned by the rotation that takes the frame's corners to the laid ones.
+Vec2 vector_to_plane(const TriMesh& mesh, int face, const std::array<Vec2, 3>& corners, const Vec3& v) {
+  Vec3 o, x, y;
+  face_frame(mesh, face, o, x, y);
+  const Vec2 local(v.dot(x), v.dot(y));
+  const Vec2 e = corners[1] - corners[0];
+  const double len = e.norm();
+  const Vec2 ex = len > 0 ? Vec2(e / len) : Vec2::UnitX();
+  return local.x() * ex + local.y() * Vec2(-ex.y(), ex.x());
+}
+
 }  // namespace
 
 void unfold_strip(const TriMesh& mesh, const std::vector<int>& strip, UnfoldedStrip& out, const UnfoldedStrip* reuse) {
@@ -81,15 +93,8 @@ void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf
 }
 
 bool lay_point(const TriMesh& mesh, int face, const std::array<Vec2, 3>& corners, const Vec3& x, Vec2& out) {
-  // x - p0 = a (p1 - p0) + b (p2 - p0) + (normal part), by the normal equations of the edges.
-  const auto& t = mesh.triangles[face];
-  const Vec3 e1 = mesh.positions[t[1]] - mesh.positions[t[0]], e2 = mesh.positions[t[2]] - mesh.positions[t[0]];
-  const Vec3 w = x - mesh.positions[t[0]];
-  const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2), w1 = w.dot(e1), w2 = w.dot(e2);
-  const double det = g11 * g22 - g12 * g12;
-  if (!(det > 0)) return false;
-  const double a = (w1 * g22 - w2 * g12) / det, b = (w2 * g11 - w1 * g12) / det;
-  out = corners[0] + a * (corners[1] - corners[0]) + b * (corners[2] - corners[0]);
+  if (face_normal(mesh, face).isZero()) return false;
+  out = corners[0] + vector_to_plane(mesh, face, corners, x - mesh.positions[mesh.triangles[face][0]]);
   return true;
 }
 
@@ -168,14 +173,7 @@ void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first) {
 }
 
 Vec2 UnfoldedStrip::to_plane(const TriMesh& mesh, int i, const Vec3& v) const {
-  // Face frame coordinates, then the rotation that takes the frame's corners to the unfolded ones.
-  Vec3 o, x, y;
-  face_frame(mesh, faces[i], o, x, y);
-  const Vec2 local(v.dot(x), v.dot(y));
-  const Vec2 e = corners[i][1] - corners[i][0];
-  const double len = e.norm();
-  const Vec2 ex = len > 0 ? Vec2(e / len) : Vec2::UnitX();
-  return local.x() * ex + local.y() * Vec2(-ex.y(), ex.x());
+  return vector_to_plane(mesh, faces[i], corners[i], v);
 }
 
 Vec3 UnfoldedStrip::to_space(const TriMesh& mesh, int i, const Vec2& v) const {
