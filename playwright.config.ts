@@ -1,7 +1,8 @@
 import { defineConfig } from '@playwright/test';
 
 // Debian's Chromium is the only browser on these machines (Playwright cannot download its own).
-const PORT = 4317;
+// SPLINEKIT_E2E_PORT lets two checkouts run their e2e tests side by side.
+const PORT = Number(process.env.SPLINEKIT_E2E_PORT ?? 4317);
 
 export default defineConfig({
   testDir: 'tests/e2e',
