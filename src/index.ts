@@ -24,7 +24,8 @@ export {
 } from './spline/spline.js';
 export { SplineSet, DEFAULT_CONTINUITY, type ContinuityOptions } from './spline/spline-set.js';
 export { Bezier } from './spline/bezier.js';
-export { parseSVG, DEFAULT_MAX_BYTES, type ParseOptions } from './svg/import.js';
+export { parseSVG, DEFAULT_MAX_BYTES, DEFAULT_MAX_DEPTH, DEFAULT_MAX_ELEMENTS, type ParseOptions } from './svg/import.js';
+export { expandEntities, ENTITY_EXPANSION_FACTOR, type ExpandedText } from './svg/entities.js';
 export {
   SHAPE_ATTRIBUTE,
   SvgDocument,

@@ -8,6 +8,7 @@ export type SplinekitErrorCode =
   | 'invalid-svg'
   | 'invalid-path-data'
   | 'file-too-large'
+  | 'too-complex'
   | 'unsupported'
   | 'internal';
 

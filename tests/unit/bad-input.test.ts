@@ -5,7 +5,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { SplinekitError, init, parseSVG } from '../../src/index.js';
-import { cli } from './helpers.js';
+import { cli, useDoubling } from './helpers.js';
 
 const dir = mkdtempSync(join(tmpdir(), 'splinekit-bad-'));
 
@@ -13,6 +13,13 @@ const svg = (body: string) => `<svg xmlns="http://www.w3.org/2000/svg" viewBox="
 
 const junk = new Uint8Array(4096);
 for (let i = 0; i < junk.length; i++) junk[i] = (i * 2654435761) >>> 24; // deterministic noise with NULs
+
+const nested = (depth: number) => svg(`${'<g>'.repeat(depth)}<path d="M0 0 L1 1"/>${'</g>'.repeat(depth)}`);
+const lolz = (() => {
+  let dtd = '<!ENTITY lol0 "lol">';
+  for (let i = 1; i <= 9; i++) dtd += `<!ENTITY lol${i} "${`&lol${i - 1};`.repeat(10)}">`;
+  return `<?xml version="1.0"?><!DOCTYPE svg [${dtd}]>${svg('<text>&lol9;</text>')}`;
+})();
 
 const cases: [string, string | Uint8Array, string, RegExp][] = [
   ['empty file', '', 'invalid-svg', /empty/],
@@ -30,6 +37,10 @@ const cases: [string, string | Uint8Array, string, RegExp][] = [
   ['NaN in polygon points', svg('<polygon points="0,0 1,NaN 2,2"/>'), 'invalid-svg', /<polygon> at line 1: points has "NaN"/],
   ['bad rect length', svg('<rect width="ten" height="1"/>'), 'invalid-svg', /width="ten" is not a length/],
   ['use cycle', svg('<g id="a"><use href="#a"/></g>'), 'invalid-svg', /cycle/],
+  ['use elements doubling at 24 levels', useDoubling(24), 'too-complex', /<g id="l\d+"> at line 1 draws more than 200,000 elements/],
+  ['20,000 nested groups', nested(20_000), 'too-complex', /<g> at line 1 is nested deeper than 1,000 levels/],
+  ['an entity bomb', lolz, 'too-complex', /DTD entities expand to more than 1\.0 MiB/],
+  ['an entity that refers to itself', `<!DOCTYPE svg [<!ENTITY a "x&b;"><!ENTITY b "&a;">]>${svg('<text>&a;</text>')}`, 'invalid-svg', /the entity &a; refers to itself/],
 ];
 
 beforeAll(async () => {

@@ -44,3 +44,10 @@ export function cli(args: string[], cwd = repoRoot): { code: number; stdout: str
   const r = spawnSync(process.execPath, [join(repoRoot, 'dist/cli/splinekit.js'), ...args], { cwd, encoding: 'utf8' });
   return { code: r.status ?? -1, stdout: r.stdout, stderr: r.stderr };
 }
+
+/** `<use>`s that double at each of `levels` levels: 2^levels copies of one path from a small file. */
+export function useDoubling(levels: number): string {
+  let body = '<defs><path id="l0" d="M0 0 L1 1"/>';
+  for (let i = 1; i <= levels; i++) body += `<g id="l${i}"><use href="#l${i - 1}"/><use href="#l${i - 1}"/></g>`;
+  return `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">${body}</defs><use href="#l${levels}"/></svg>`;
+}
