@@ -383,10 +383,16 @@ class Builder {
     if (resolved.fill.startsWith('url(') || resolved.stroke.startsWith('url(')) {
       this.warn('paint-server', (n) => `${n} shape${n > 1 ? 's are' : ' is'} painted with a gradient or pattern: kept as it is (not deformed); previews use a solid stand-in color`);
     }
+    for (const r of raw) transformPoints(ctm, r.points);
+    if (!raw.every((r) => r.points.every(Number.isFinite))) {
+      // Finite path data under a transform that overflows it (e.g. scale(2) of 1e308): nothing a
+      // browser can draw either. The element stays in the file; the rest of the drawing imports.
+      this.warn(`overflow:${describe(el)}`, () => `${describe(el)}: its coordinates overflow under its transform: skipped (kept in the file)`);
+      return;
+    }
     const original: Float64Array[] = [];
     const first = this.raw.length;
     for (const r of raw) {
-      transformPoints(ctm, r.points);
       original.push(r.points.slice());
       this.raw.push(r);
     }
