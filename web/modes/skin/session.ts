@@ -1,6 +1,6 @@
-import { poseAt, type AffineMatrix, type SkinError, type SvgDocument } from '../../../src/index.js';
+import { IDENTITY_MATRIX, poseAt, type AffineMatrix, type SkinError, type SvgDocument } from '../../../src/index.js';
 import { Emitter } from '../../app/events.js';
-import { IDENTITY, isIdentity } from './affine.js';
+import { isIdentity } from './affine.js';
 import { buildRig, type BuiltRig } from './rig-build.js';
 import { rigKey, setPose, type SkinSpec, type WeightKind } from './spec.js';
 import { CancelledError, type WeightsClient } from './weights-client.js';
@@ -280,7 +280,7 @@ export class SkinSession {
   private transformsFor(built: BuiltRig): AffineMatrix[] {
     return built.ids.map((id) => {
       const i = this.indexOf(id);
-      return i < 0 ? IDENTITY : this._spec.pose[i];
+      return i < 0 ? IDENTITY_MATRIX : this._spec.pose[i];
     });
   }
 

@@ -1,8 +1,9 @@
+import { IDENTITY_MATRIX } from '../../../src/index.js';
 import type { LoadedDocument } from '../../app/state.js';
 import { DebouncedSave, readJSON, writeJSON } from '../../app/autosave.js';
 import type { Mode, ModeContext } from '../../app/modes.js';
 import type { ViewPointer } from '../../view2d/view2d.js';
-import { IDENTITY, apply, invert, isIdentity, sameMatrix } from './affine.js';
+import { apply, invert, isIdentity, sameMatrix } from './affine.js';
 import { SpecCommand } from './commands.js';
 import { exportAnimated, exportPosed } from './export.js';
 import { poseFor, readout, type Gesture } from './gestures.js';
@@ -424,7 +425,7 @@ export class SkinMode implements Mode {
     const s = this.session;
     if (!s || s.spec.handles.length === 0) return;
     const i = s.indexOf(s.selected);
-    const pose = s.spec.pose.map((m, k) => (i < 0 || k === i ? IDENTITY : m));
+    const pose = s.spec.pose.map((m, k) => (i < 0 || k === i ? IDENTITY_MATRIX : m));
     if (pose.every((m, k) => sameMatrix(m, s.spec.pose[k]))) return;
     this.execute(i < 0 ? 'Reset pose' : 'Reset handle pose', setPose(s.spec, pose));
   }
