@@ -1,13 +1,18 @@
 // Small pieces of the editor (web/) that its modes share and that run without a browser: the
-// cubic point kernel both 2D drawing paths use.
+// cubic point kernel both 2D drawing paths use, the in-flight tracker the test hook waits on, and
+// the request/response worker client (here over a stand-in worker).
 import { beforeAll, describe, expect, test } from 'vitest';
 import { Bezier, init } from '../../src/index.js';
+import { InFlight } from '../../web/app/in-flight.js';
+import { WorkerClient } from '../../web/app/worker-client.js';
 import { cubicPointInto } from '../../web/view2d/cubic.js';
 import { cubicAt } from './helpers.js';
 
 beforeAll(async () => {
   await init();
 });
+
+const nextTask = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 
 describe('cubicPointInto', () => {
   test('agrees with the power basis and with the core (Bezier.point), at offsets in a longer array', () => {
@@ -37,5 +42,136 @@ describe('cubicPointInto', () => {
     const out = [NaN, NaN];
     cubicPointInto(p, 6, 8, 10, 0, 1, out, 0);
     expect(out).toEqual([0, 0]);
+  });
+});
+
+describe('InFlight', () => {
+  test('idle() waits for tracked promises and hand-begun work, and not for settled ones', async () => {
+    const work = new InFlight();
+    expect(work.busy).toBe(false);
+    await work.idle(); // resolves at once
+    let release!: () => void;
+    const tracked = work.track(new Promise<void>((resolve) => (release = resolve)));
+    const end = work.begin();
+    expect(work.size).toBe(2);
+    let idle = false;
+    void work.idle().then(() => (idle = true));
+    release();
+    await tracked;
+    await nextTask();
+    expect(work.size).toBe(1);
+    expect(idle).toBe(false);
+    end();
+    end(); // a second call does nothing
+    expect(work.size).toBe(0);
+    await nextTask();
+    expect(idle).toBe(true);
+  });
+
+  test('a rejection ends the work too, and work started in reply keeps it busy', async () => {
+    const work = new InFlight();
+    let idle = false;
+    const first = work.track(Promise.reject(new Error('no')));
+    void work.idle().then(() => (idle = true));
+    let second: Promise<void> | null = null;
+    // What a handler of the first starts in reply counts before the waiters wake.
+    await first.catch(() => {
+      second = work.track(new Promise<void>((resolve) => setTimeout(resolve, 30)));
+    });
+    await nextTask();
+    expect(idle).toBe(false);
+    expect(work.busy).toBe(true);
+    await second;
+    await nextTask();
+    expect(idle).toBe(true);
+  });
+});
+
+/** Stands in for a dedicated worker: records what it is sent; the test answers by hand. */
+class FakeWorker extends EventTarget {
+  sent: { message: { id: number; type: string }; transfer: Transferable[] }[] = [];
+  terminated = false;
+  postMessage(message: { id: number; type: string }, transfer: Transferable[] = []): void {
+    this.sent.push({ message, transfer });
+  }
+  terminate(): void {
+    this.terminated = true;
+  }
+  reply(data: unknown): void {
+    this.dispatchEvent(new MessageEvent('message', { data }));
+  }
+  fail(message: string): void {
+    this.dispatchEvent(Object.assign(new Event('error', { cancelable: true }), { message }));
+  }
+}
+
+type Req = { id: number; type: 'square'; x: number };
+type Rep = { id: number; type: 'squared'; y: number } | { id: number; type: 'progress'; fraction: number } | { id: number; type: 'error'; message: string };
+
+describe('WorkerClient', () => {
+  function client() {
+    const workers: FakeWorker[] = [];
+    const c = new WorkerClient<Req, Rep>(() => {
+      const w = new FakeWorker();
+      workers.push(w);
+      return w as unknown as Worker;
+    }, 'test');
+    return { c, workers };
+  }
+
+  test('gives each request an id and settles it by its own reply, in any order; progress does not settle', async () => {
+    const { c, workers } = client();
+    const buffer = new ArrayBuffer(8);
+    const progress: number[] = [];
+    const a = c.request({ type: 'square', x: 3 }, [buffer], (r) => r.type === 'progress' && progress.push(r.fraction));
+    const b = c.request({ type: 'square', x: 4 });
+    expect(workers).toHaveLength(1); // started once, on the first request
+    const [sa, sb] = workers[0].sent;
+    expect(sa.message).toEqual({ type: 'square', x: 3, id: sa.message.id });
+    expect(sa.transfer).toEqual([buffer]);
+    expect(sb.message.id).not.toBe(sa.message.id);
+    expect(c.size).toBe(2);
+    workers[0].reply({ id: sb.message.id, type: 'squared', y: 16 });
+    workers[0].reply({ id: sa.message.id, type: 'progress', fraction: 0.5 });
+    expect(c.size).toBe(1);
+    workers[0].reply({ id: sa.message.id, type: 'squared', y: 9 });
+    expect(await a).toEqual({ id: sa.message.id, type: 'squared', y: 9 });
+    expect(await b).toEqual({ id: sb.message.id, type: 'squared', y: 16 });
+    expect(progress).toEqual([0.5]);
+    expect(c.size).toBe(0);
+  });
+
+  test('an error reply rejects its request with the message; a late reply to it is ignored', async () => {
+    const { c, workers } = client();
+    const a = c.request({ type: 'square', x: -1 });
+    const id = workers[0].sent[0].message.id;
+    workers[0].reply({ id, type: 'error', message: 'negative' });
+    await expect(a).rejects.toThrow('negative');
+    workers[0].reply({ id, type: 'squared', y: 1 });
+    expect(c.size).toBe(0);
+  });
+
+  test('terminate() rejects every request waiting with the reason and the next request starts a fresh worker', async () => {
+    const { c, workers } = client();
+    const a = c.request({ type: 'square', x: 1 }), b = c.request({ type: 'square', x: 2 });
+    const reason = new Error('cancelled');
+    c.terminate(reason);
+    await expect(a).rejects.toBe(reason);
+    await expect(b).rejects.toBe(reason);
+    expect(workers[0].terminated).toBe(true);
+    const d = c.request({ type: 'square', x: 5 });
+    expect(workers).toHaveLength(2);
+    workers[1].reply({ id: workers[1].sent[0].message.id, type: 'squared', y: 25 });
+    expect((await d).type).toBe('squared');
+  });
+
+  test('a worker that fails rejects what waits, naming the worker, and is replaced', async () => {
+    const { c, workers } = client();
+    const a = c.request({ type: 'square', x: 1 });
+    workers[0].fail('boom');
+    await expect(a).rejects.toThrow('the test worker failed: boom');
+    expect(workers[0].terminated).toBe(true);
+    void c.request({ type: 'square', x: 2 });
+    expect(workers).toHaveLength(2);
   });
 });

@@ -1,6 +1,7 @@
 import { IDENTITY_MATRIX } from '../../../src/index.js';
 import type { LoadedDocument } from '../../app/state.js';
 import { DebouncedSave, readJSON, writeJSON } from '../../app/autosave.js';
+import { InFlight } from '../../app/in-flight.js';
 import type { Mode, ModeContext } from '../../app/modes.js';
 import type { ViewPointer } from '../../view2d/view2d.js';
 import { apply, invert, isIdentity, sameMatrix } from './affine.js';
@@ -59,6 +60,8 @@ export class SkinMode implements Mode {
   private ctx: ModeContext | null = null;
   private ui: SkinView | null = null;
   private readonly client = new WeightsClient();
+  /** The mode's work under way (rig builds): what the test hook's `busy` reads. */
+  private readonly work = new InFlight();
   private readonly sessions = new Map<LoadedDocument, SkinSession>();
   private current: LoadedDocument | null = null;
   private session: SkinSession | null = null;
@@ -254,7 +257,7 @@ export class SkinMode implements Mode {
     let s = this.sessions.get(current);
     const fresh = !s;
     if (!s) {
-      s = new SkinSession(current.doc, this.client, EMPTY_SPEC);
+      s = new SkinSession(current.doc, this.client, this.work, EMPTY_SPEC);
       this.sessions.set(current, s);
     }
     this.session = s;
@@ -595,6 +598,7 @@ export class SkinMode implements Mode {
       active: this.ctx !== null,
       layers: this.ui?.curves.counts ?? { target: 0, naive: 0, field: 0 },
       saved: !this.autosave.pending,
+      busy: this.work.busy,
     });
   }
 
