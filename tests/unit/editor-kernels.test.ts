@@ -1,10 +1,11 @@
 // Small pieces of the editor (web/) that its modes share and that run without a browser: the
-// cubic point kernel both 2D drawing paths use, the in-flight tracker the test hook waits on, and
+// cubic point kernel both 2D drawing paths use, Surface mode's list of mesh files, the in-flight tracker the test hook waits on, and
 // the request/response worker client (here over a stand-in worker).
 import { beforeAll, describe, expect, test } from 'vitest';
-import { Bezier, init } from '../../src/index.js';
+import { Bezier, init, meshFormatOf } from '../../src/index.js';
 import { InFlight } from '../../web/app/in-flight.js';
 import { WorkerClient } from '../../web/app/worker-client.js';
+import { MESH_ACCEPT, MESH_EXTENSIONS, isMeshFile } from '../../web/modes/surface/mesh-files.js';
 import { cubicPointInto } from '../../web/view2d/cubic.js';
 import { cubicAt } from './helpers.js';
 
@@ -173,5 +174,20 @@ describe('WorkerClient', () => {
     expect(workers[0].terminated).toBe(true);
     void c.request({ type: 'square', x: 2 });
     expect(workers).toHaveLength(2);
+  });
+});
+
+describe('mesh files', () => {
+  test('every extension the editor accepts is a format the package reads, and the accept list is that list', () => {
+    for (const ext of MESH_EXTENSIONS) expect(meshFormatOf(`mesh.${ext}`)).toBe(ext);
+    expect(MESH_ACCEPT.split(',')).toEqual(MESH_EXTENSIONS.map((e) => `.${e}`));
+  });
+
+  test('isMeshFile goes by the last extension, in any case', () => {
+    expect(isMeshFile('bunny.OBJ')).toBe(true);
+    expect(isMeshFile('scan.v2.glb')).toBe(true);
+    expect(isMeshFile('drawing.svg')).toBe(false);
+    expect(isMeshFile('ply')).toBe(false);
+    expect(isMeshFile('mesh.obj.svg')).toBe(false);
   });
 });

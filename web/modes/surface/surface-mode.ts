@@ -17,7 +17,8 @@ import { MeshSessions } from './mesh-sessions.js';
 import { SurfacePicking } from './picking.js';
 import type { SurfaceSession } from './session.js';
 import { SURFACE_COLORS, SurfaceLayers } from './surface-layers.js';
-import { MESH_ACCEPT, SurfacePanel, type SurfaceTool } from './surface-panel.js';
+import { MESH_ACCEPT } from './mesh-files.js';
+import { SurfacePanel, type SurfaceTool } from './surface-panel.js';
 import { SurfaceStatus } from './surface-status.js';
 import { loadPrefs, saveDrawing, savePrefs, saveSurfaceSession, type SurfacePrefs } from './storage.js';
 import { SvgPlacement } from './svg-placement.js';
@@ -27,13 +28,6 @@ import { TraceCache } from './trace-cache.js';
 export type { SurfaceTestState };
 
 const AUTOSAVE_MS = 300;
-
-const MESH_EXTENSIONS = /\.(obj|off|ply|stl|gltf|glb)$/i;
-
-/** Whether a file name is a mesh Surface mode opens. */
-export function isMeshFile(name: string): boolean {
-  return MESH_EXTENSIONS.test(name);
-}
 
 const TOOL_HINTS: Record<SurfaceTool, string> = {
   draw: 'Click on the mesh to place points: the first click starts a spline, each next one adds a segment; Enter, Esc or a double click finishes. Drag points to edit; Alt+click a curve inserts a point.',
