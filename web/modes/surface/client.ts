@@ -74,7 +74,10 @@ export class SurfaceClient {
   /** Stops the worker; every request waiting (sent or queued in a lane) rejects. */
   dispose(): void {
     const stopped = new Error('the surface worker was stopped');
-    for (const lane of this.lanes.values()) lane.queued?.reject(stopped);
+    for (const lane of this.lanes.values()) {
+      lane.queued?.reject(stopped);
+      lane.queued = null; // not sent when the request in flight settles
+    }
     this.lanes.clear();
     this.worker.terminate(stopped);
   }
