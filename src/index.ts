@@ -61,6 +61,7 @@ export {
   type MeshPoint,
   type MeshPointLike,
 } from './surface/mesh.js';
+export { meshPointNormal, meshPointPosition, vertexNormals } from './surface/mesh-point.js';
 export { parseMesh, meshFormatOf, DEFAULT_MAX_MESH_BYTES, type MeshArrays, type MeshFormat, type MeshParseOptions } from './surface/mesh-io.js';
 export {
   SurfaceSpline,

@@ -1,7 +1,8 @@
 import type { SvgDocument } from '../../src/index.js';
 import { DocumentMode } from '../modes/document-mode.js';
 import { SkinMode } from '../modes/skin/skin-mode.js';
-import { SurfaceMode, isMeshFile } from '../modes/surface/surface-mode.js';
+import { isMeshFile } from '../modes/surface/mesh-files.js';
+import { SurfaceMode } from '../modes/surface/surface-mode.js';
 import { ControlOverlay } from '../overlay/overlay.js';
 import { h } from '../ui/dom.js';
 import { SidePanel } from '../ui/panel.js';

@@ -1,5 +1,6 @@
 import { Vector2 } from 'three';
 import { segmentCount, type Spline } from '../../src/index.js';
+import { cubicPointInto } from './cubic.js';
 
 /**
  * Flattens a spline into a polyline whose distance to the curve stays within `tolerance`
@@ -12,20 +13,20 @@ export function flattenSpline(s: Spline, tolerance: number, maxSteps = 96): Vect
   const n = p.length / 2;
   const segments = segmentCount(s);
   const out: Vector2[] = [];
+  const xy: [number, number] = [0, 0];
   if (n === 0) return out;
   out.push(new Vector2(p[0], p[1]));
   for (let k = 0; k < segments; k++) {
-    const i0 = 3 * k, i1 = i0 + 1, i2 = i0 + 2, i3 = (i0 + 3) % n;
-    const x0 = p[2 * i0], y0 = p[2 * i0 + 1];
-    const x1 = p[2 * i1], y1 = p[2 * i1 + 1];
-    const x2 = p[2 * i2], y2 = p[2 * i2 + 1];
-    const x3 = p[2 * i3], y3 = p[2 * i3 + 1];
+    const i0 = 6 * k, i1 = i0 + 2, i2 = i0 + 4, i3 = (i0 + 6) % (2 * n);
+    const x0 = p[i0], y0 = p[i0 + 1];
+    const x1 = p[i1], y1 = p[i1 + 1];
+    const x2 = p[i2], y2 = p[i2 + 1];
+    const x3 = p[i3], y3 = p[i3 + 1];
     const dd = Math.max(Math.hypot(x0 - 2 * x1 + x2, y0 - 2 * y1 + y2), Math.hypot(x1 - 2 * x2 + x3, y1 - 2 * y2 + y3));
     const steps = Math.min(maxSteps, Math.max(1, Math.ceil(Math.sqrt((0.75 * dd) / tolerance))));
     for (let j = 1; j <= steps; j++) {
-      const t = j / steps, u = 1 - t;
-      const b0 = u * u * u, b1 = 3 * u * u * t, b2 = 3 * u * t * t, b3 = t * t * t;
-      out.push(new Vector2(b0 * x0 + b1 * x1 + b2 * x2 + b3 * x3, b0 * y0 + b1 * y1 + b2 * y2 + b3 * y3));
+      cubicPointInto(p, i0, i1, i2, i3, j / steps, xy, 0);
+      out.push(new Vector2(xy[0], xy[1]));
     }
   }
   return out;

@@ -1,11 +1,9 @@
-import type { AffineMatrix } from '../../../src/index.js';
+import { IDENTITY_MATRIX, type AffineMatrix } from '../../../src/index.js';
 
 /**
  * 2×3 affine matrices as SVG writes them, [a b c d e f]: x' = a·x + c·y + e, y' = b·x + d·y + f.
  * The pose editing math of skin mode (compose, rotate or scale about a point), plain functions.
  */
-
-export const IDENTITY: AffineMatrix = [1, 0, 0, 1, 0, 0];
 
 /** m·n: first n, then m. */
 export function multiply(m: AffineMatrix, n: AffineMatrix): AffineMatrix {
@@ -49,7 +47,7 @@ export function scaleOf(m: AffineMatrix): number {
 }
 
 export function isIdentity(m: AffineMatrix, eps = 1e-12): boolean {
-  return m.every((v, i) => Math.abs(v - IDENTITY[i]) <= eps);
+  return m.every((v, i) => Math.abs(v - IDENTITY_MATRIX[i]) <= eps);
 }
 
 export function sameMatrix(m: AffineMatrix, n: AffineMatrix, eps = 0): boolean {

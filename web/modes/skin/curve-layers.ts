@@ -1,5 +1,6 @@
 import { Group } from 'three';
 import { segmentCount, type SvgDocument } from '../../../src/index.js';
+import { cubicPointInto } from '../../view2d/cubic.js';
 import { flattenSpline } from '../../view2d/tessellate.js';
 import type { View2D } from '../../view2d/view2d.js';
 import { HEAT, Ramp, SKIN_COLORS, WEIGHT } from './colors.js';
@@ -68,12 +69,7 @@ export function curveSamples(doc: SvgDocument, points: Float64Array, perCurve: n
     const n = segmentCount(s), count = s.points.length / 2;
     for (let k = 0; k < n; k++) {
       const i0 = at + 2 * (3 * k), i1 = at + 2 * (3 * k + 1), i2 = at + 2 * (3 * k + 2), i3 = at + 2 * ((3 * k + 3) % count);
-      for (let j = 0; j < perCurve; j++) {
-        const t = (j + 0.5) / perCurve, u = 1 - t;
-        const b0 = u * u * u, b1 = 3 * u * u * t, b2 = 3 * u * t * t, b3 = t * t * t;
-        out[o++] = b0 * points[i0] + b1 * points[i1] + b2 * points[i2] + b3 * points[i3];
-        out[o++] = b0 * points[i0 + 1] + b1 * points[i1 + 1] + b2 * points[i2 + 1] + b3 * points[i3 + 1];
-      }
+      for (let j = 0; j < perCurve; j++, o += 2) cubicPointInto(points, i0, i1, i2, i3, (j + 0.5) / perCurve, out, o);
     }
     at += s.points.length;
   }

@@ -1,6 +1,7 @@
-import { poseAt, type AffineMatrix, type SkinError, type SvgDocument } from '../../../src/index.js';
+import { IDENTITY_MATRIX, poseAt, type AffineMatrix, type SkinError, type SvgDocument } from '../../../src/index.js';
 import { Emitter } from '../../app/events.js';
-import { IDENTITY, isIdentity } from './affine.js';
+import type { InFlight } from '../../app/in-flight.js';
+import { isIdentity } from './affine.js';
 import { buildRig, type BuiltRig } from './rig-build.js';
 import { rigKey, setPose, type SkinSpec, type WeightKind } from './spec.js';
 import { CancelledError, type WeightsClient } from './weights-client.js';
@@ -72,6 +73,8 @@ export class SkinSession {
   constructor(
     readonly doc: SvgDocument,
     private readonly client: WeightsClient,
+    /** Where the rig builds under way are counted (the mode's in-flight tracker). */
+    private readonly work: InFlight,
     spec: SkinSpec,
   ) {
     this._spec = spec;
@@ -280,7 +283,7 @@ export class SkinSession {
   private transformsFor(built: BuiltRig): AffineMatrix[] {
     return built.ids.map((id) => {
       const i = this.indexOf(id);
-      return i < 0 ? IDENTITY : this._spec.pose[i];
+      return i < 0 ? IDENTITY_MATRIX : this._spec.pose[i];
     });
   }
 
@@ -340,7 +343,7 @@ export class SkinSession {
     this.failedKey = null;
     this.setStatus({ phase: 'building', kind: spec.weights, stage: 'Starting', fraction: 0, message: null, stale: this.built !== null });
     const wanted = () => generation === this.generation && !this.suspended;
-    buildRig(this.doc, spec, key, this.client, (stage, fraction) => wanted() && this.setStatus({ stage, fraction }), wanted).then(
+    this.work.track(buildRig(this.doc, spec, key, this.client, (stage, fraction) => wanted() && this.setStatus({ stage, fraction }), wanted)).then(
       (built) => {
         if (!wanted()) {
           built.rig.dispose();

@@ -1,8 +1,10 @@
+import { IDENTITY_MATRIX } from '../../../src/index.js';
 import type { LoadedDocument } from '../../app/state.js';
 import { DebouncedSave, readJSON, writeJSON } from '../../app/autosave.js';
+import { InFlight } from '../../app/in-flight.js';
 import type { Mode, ModeContext } from '../../app/modes.js';
 import type { ViewPointer } from '../../view2d/view2d.js';
-import { IDENTITY, apply, invert, isIdentity, sameMatrix } from './affine.js';
+import { apply, invert, isIdentity, sameMatrix } from './affine.js';
 import { SpecCommand } from './commands.js';
 import { exportAnimated, exportPosed } from './export.js';
 import { poseFor, readout, type Gesture } from './gestures.js';
@@ -58,6 +60,8 @@ export class SkinMode implements Mode {
   private ctx: ModeContext | null = null;
   private ui: SkinView | null = null;
   private readonly client = new WeightsClient();
+  /** The mode's work under way (rig builds): what the test hook's `busy` reads. */
+  private readonly work = new InFlight();
   private readonly sessions = new Map<LoadedDocument, SkinSession>();
   private current: LoadedDocument | null = null;
   private session: SkinSession | null = null;
@@ -253,7 +257,7 @@ export class SkinMode implements Mode {
     let s = this.sessions.get(current);
     const fresh = !s;
     if (!s) {
-      s = new SkinSession(current.doc, this.client, EMPTY_SPEC);
+      s = new SkinSession(current.doc, this.client, this.work, EMPTY_SPEC);
       this.sessions.set(current, s);
     }
     this.session = s;
@@ -424,7 +428,7 @@ export class SkinMode implements Mode {
     const s = this.session;
     if (!s || s.spec.handles.length === 0) return;
     const i = s.indexOf(s.selected);
-    const pose = s.spec.pose.map((m, k) => (i < 0 || k === i ? IDENTITY : m));
+    const pose = s.spec.pose.map((m, k) => (i < 0 || k === i ? IDENTITY_MATRIX : m));
     if (pose.every((m, k) => sameMatrix(m, s.spec.pose[k]))) return;
     this.execute(i < 0 ? 'Reset pose' : 'Reset handle pose', setPose(s.spec, pose));
   }
@@ -594,6 +598,7 @@ export class SkinMode implements Mode {
       active: this.ctx !== null,
       layers: this.ui?.curves.counts ?? { target: 0, naive: 0, field: 0 },
       saved: !this.autosave.pending,
+      busy: this.work.busy,
     });
   }
 

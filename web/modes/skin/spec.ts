@@ -1,5 +1,5 @@
-import type { AffineMatrix, Keyframe } from '../../../src/index.js';
-import { IDENTITY, isFiniteMatrix } from './affine.js';
+import { IDENTITY_MATRIX, type AffineMatrix, type Keyframe } from '../../../src/index.js';
+import { isFiniteMatrix } from './affine.js';
 
 /**
  * What the user builds in skin mode, as an immutable value: handles at their rest positions, the
@@ -52,7 +52,7 @@ function nearest(spec: SkinSpec, x: number, y: number): number {
  * drawing apart.
  */
 export function addHandle(spec: SkinSpec, id: number, x: number, y: number, follow = nearest(spec, x, y)): SkinSpec {
-  const copy = (list: readonly AffineMatrix[]) => [...list, follow < 0 ? IDENTITY : list[follow]];
+  const copy = (list: readonly AffineMatrix[]) => [...list, follow < 0 ? IDENTITY_MATRIX : list[follow]];
   return {
     ...spec,
     handles: [...spec.handles, { id, x, y }],

@@ -35,11 +35,13 @@ export interface SkinTestState {
   layers: { target: number; naive: number; field: number };
   /** No autosave is pending. */
   saved: boolean;
+  /** Work under way in the mode (a rig build): the mode's in-flight tracker is not idle. */
+  busy: boolean;
 }
 
 export function skinTestState(
   st: SkinViewState,
-  extra: { active: boolean; layers: SkinTestState['layers']; saved: boolean },
+  extra: { active: boolean; layers: SkinTestState['layers']; saved: boolean; busy: boolean },
 ): SkinTestState {
   const s = st.session, spec = s?.spec ?? EMPTY_SPEC, status = s?.status;
   const points = s?.points ?? null;
@@ -75,5 +77,6 @@ export function skinTestState(
     naiveRms: errors?.naive.rms ?? null,
     layers: extra.layers,
     saved: extra.saved,
+    busy: extra.busy,
   };
 }

@@ -1,6 +1,7 @@
 import type { MeshInfo } from '../../../src/index.js';
 import { h, noFocusOnClick } from '../../ui/dom.js';
 import { facts, section } from '../../ui/panel.js';
+import { MESH_ACCEPT } from './mesh-files.js';
 import type { Scheme, Subdivision, SurfacePrefs } from './storage.js';
 
 export type SurfaceTool = 'draw' | 'move' | 'rotate' | 'scale';
@@ -10,8 +11,6 @@ export interface SampleFile {
   file: string;
   title: string;
 }
-
-export const MESH_ACCEPT = '.obj,.off,.ply,.stl,.gltf,.glb';
 
 export interface SurfacePanelActions {
   openSample(file: string): void;

@@ -4,17 +4,10 @@
  * points, so the worker keeps no history and a stale request is harmless. Requests are answered
  * in order, one at a time.
  */
-import { SurfaceMesh, SurfaceSpline, init, mapSplines, parseSVG, type MeshPoint, type SurfaceSplineJSON } from '../../../src/index.js';
+import { SurfaceMesh, SurfaceSpline, init, mapSplines, meshPointNormal, parseSVG, vertexNormals, type MeshPoint, type SurfaceSplineJSON } from '../../../src/index.js';
+import { serveRequests } from '../../app/worker-host.js';
 import { TriangleBVH } from '../../view3d/bvh.js';
 import type { PolygonPaths, SplineOp, SurfaceReply, SurfaceRequest, TracedPolyline } from './protocol.js';
-
-/** The parts of a dedicated worker's global scope used here (web/ compiles with the DOM lib). */
-interface WorkerScope {
-  postMessage(message: SurfaceReply, options?: { transfer?: Transferable[] }): void;
-  addEventListener(type: 'message', listener: (e: MessageEvent<SurfaceRequest>) => void): void;
-}
-const scope = self as unknown as WorkerScope;
-const post = (reply: SurfaceReply, transfer: Transferable[] = []) => scope.postMessage(reply, { transfer });
 
 /**
  * Drawn polylines float this fraction of the mesh size above the surface (along its normal). Zero:
@@ -29,28 +22,19 @@ let normals: Float32Array | null = null;
 let lift = 0;
 const ready = init();
 
-// Requests run one after another, in the order they came.
-let queue: Promise<void> = Promise.resolve();
-scope.addEventListener('message', (e) => {
-  const req = e.data;
-  queue = queue.then(() => handle(req));
-});
+const post = serveRequests<SurfaceRequest, SurfaceReply>(handle);
 
 async function handle(req: SurfaceRequest): Promise<void> {
-  try {
-    await ready;
-    switch (req.type) {
-      case 'load':
-        return await load(req.id, req.bytes, req.name);
-      case 'run':
-        return run(req);
-      case 'path':
-        return path(req.id, req.a, req.b);
-      case 'map':
-        return map(req);
-    }
-  } catch (err) {
-    post({ type: 'error', id: req.id, message: err instanceof Error ? err.message : String(err) });
+  await ready;
+  switch (req.type) {
+    case 'load':
+      return await load(req.id, req.bytes, req.name);
+    case 'run':
+      return run(req);
+    case 'path':
+      return path(req.id, req.a, req.b);
+    case 'map':
+      return map(req);
   }
 }
 
@@ -210,45 +194,12 @@ function liftPoints(m: SurfaceMesh, points: readonly MeshPoint[], xyz: ArrayLike
   if (lift === 0) return Float32Array.from(xyz);
   const T = m.triangles, N = normals!;
   const out = new Float32Array(3 * points.length);
+  const n: [number, number, number] = [0, 0, 0];
   for (let i = 0; i < points.length; i++) {
-    const { face, uv } = points[i];
-    const w0 = 1 - uv[0] - uv[1], w1 = uv[0], w2 = uv[1];
-    const a = 3 * T[3 * face], b = 3 * T[3 * face + 1], c = 3 * T[3 * face + 2];
-    let nx = w0 * N[a] + w1 * N[b] + w2 * N[c];
-    let ny = w0 * N[a + 1] + w1 * N[b + 1] + w2 * N[c + 1];
-    let nz = w0 * N[a + 2] + w1 * N[b + 2] + w2 * N[c + 2];
-    const l = Math.hypot(nx, ny, nz) || 1;
-    nx /= l;
-    ny /= l;
-    nz /= l;
-    out[3 * i] = xyz[3 * i] + lift * nx;
-    out[3 * i + 1] = xyz[3 * i + 1] + lift * ny;
-    out[3 * i + 2] = xyz[3 * i + 2] + lift * nz;
+    meshPointNormal(N, T, points[i], n);
+    out[3 * i] = xyz[3 * i] + lift * n[0];
+    out[3 * i + 1] = xyz[3 * i + 1] + lift * n[1];
+    out[3 * i + 2] = xyz[3 * i + 2] + lift * n[2];
   }
   return out;
-}
-
-/** Area-weighted vertex normals (unit; zero for unreferenced vertices). */
-function vertexNormals(P: ArrayLike<number>, T: ArrayLike<number>): Float32Array {
-  const N = new Float32Array(P.length);
-  for (let f = 0; f < T.length; f += 3) {
-    const a = 3 * T[f], b = 3 * T[f + 1], c = 3 * T[f + 2];
-    const ux = P[b] - P[a], uy = P[b + 1] - P[a + 1], uz = P[b + 2] - P[a + 2];
-    const vx = P[c] - P[a], vy = P[c + 1] - P[a + 1], vz = P[c + 2] - P[a + 2];
-    const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-    for (const k of [a, b, c]) {
-      N[k] += nx;
-      N[k + 1] += ny;
-      N[k + 2] += nz;
-    }
-  }
-  for (let i = 0; i < N.length; i += 3) {
-    const l = Math.hypot(N[i], N[i + 1], N[i + 2]);
-    if (l > 0) {
-      N[i] /= l;
-      N[i + 1] /= l;
-      N[i + 2] /= l;
-    }
-  }
-  return N;
 }
