@@ -3,8 +3,8 @@
 // a table and written to build/bench/results.json and BENCHMARKS.md (with machine and date).
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
 //
-// `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections
-// (skin-weight-steps) and replaces just their text in BENCHMARKS.md (and their entries in
+// `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
+// skin-weight-steps) and replaces just their text in BENCHMARKS.md (and their entries in
 // build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -12,6 +12,7 @@ import os from 'node:os';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
+import { editorBenchmarks, editorSection } from './editor.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
 
@@ -48,6 +49,7 @@ const load = () => os.loadavg()[0].toFixed(1);
  * its heading (up to the next heading of the same or a higher level), and its key in results.json.
  */
 const sections = {
+  editor: { key: 'editor', heading: '## Editor (Chromium)', before: '## Memory and size', run: () => editorBenchmarks(root, data, { log: console.log }), markdown: editorSection },
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
 };
 
@@ -154,11 +156,14 @@ const weightsSpeed = skinWeightsSpeed(data);
 const weightSteps = { ...skinWeightSteps(data), load: load() };
 console.log(`skin weight steps: ${JSON.stringify(weightSteps)}`);
 
+// ---- the editor in Chromium -------------------------------------------------------------------
+const editor = { ...(await editorBenchmarks(root, data, { log: console.log })), load: load() };
+
 // ---- surface (b/Surf) -------------------------------------------------------------------------
 const surface = await surfaceBenchmarks(root, data, { log: console.log });
 
 // ---- report -----------------------------------------------------------------------------------
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -234,6 +239,7 @@ All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${
 
 ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })}
 ${surfaceSection(surface)}
+${editorSection(editor, { date, machine, load: editor.load })}
 ## Memory and size
 
 - malloc'd bytes in the wasm heap after 20 more imports of ${bigRel.replace('svg/', '')}: **${leak}** more than before (0 = nothing leaked).
