@@ -53,8 +53,9 @@ function nextFrame(page: Page): Promise<void> {
 
 /**
  * Presses at `from`, moves in `steps` to `to` (as a user drags), releases. Each move waits for
- * the next animation frame, so that the moves spread over frames as a user's do (the mode
- * retraces once per frame at most) instead of all landing before the first frame.
+ * the next animation frame, so that the moves spread over frames as a user's do (each move asks
+ * the worker for a retrace that supersedes the one before, drawn when it arrives) instead of
+ * all landing before the first frame.
  */
 async function drag(page: Page, from: XY, to: XY, steps = 10): Promise<void> {
   await page.mouse.move(from.x, from.y);
