@@ -2,13 +2,18 @@
 // `npm run bench`: speed of the foundation on ../shared/data, as medians after warm-up, printed as
 // a table and written to build/bench/results.json and BENCHMARKS.md (with machine and date).
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
+//
+// `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
+// skin-weight-steps) and replaces just their text in BENCHMARKS.md (and their entries in
+// build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
-import { skinAccuracy, skinSpeed, skinWeightsSpeed } from './skin.mjs';
+import { editorBenchmarks, editorSection } from './editor.mjs';
+import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
@@ -33,6 +38,56 @@ function time(fn, repeats, warmup = 3) {
 }
 
 await init();
+
+const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, ${(os.totalmem() / 2 ** 30).toFixed(0)} GiB, Node ${process.version}, ${os.platform()} ${os.release()}`;
+const date = new Date().toISOString().slice(0, 10);
+/** The machine's 1-minute load average now, for sections that say how busy the machine was. */
+const load = () => os.loadavg()[0].toFixed(1);
+
+/**
+ * Sections that can run alone (--only): each writes its own part of BENCHMARKS.md, found again by
+ * its heading (up to the next heading of the same or a higher level), and its key in results.json.
+ */
+const sections = {
+  editor: { key: 'editor', heading: '## Editor (Chromium)', before: '## Memory and size', run: () => editorBenchmarks(root, data, { log: console.log }), markdown: editorSection },
+  'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
+};
+
+/**
+ * Replaces the part of `md` under the heading that starts with `heading` by `text`; a section
+ * the file does not have yet goes where the full run puts it, before the heading `before`.
+ */
+function spliceSection(md, { heading, before }, text) {
+  const lines = md.split('\n');
+  const level = heading.indexOf(' ');
+  let start = lines.findIndex((l) => l.startsWith(heading)), end = start + 1;
+  if (start < 0) {
+    start = end = lines.findIndex((l) => l.startsWith(before));
+    if (start < 0) throw new Error(`BENCHMARKS.md has neither "${heading}" nor "${before}": run the full benchmark once`);
+  } else {
+    while (end < lines.length && !(/^#+ /.test(lines[end]) && lines[end].indexOf(' ') <= level)) end++;
+  }
+  return [...lines.slice(0, start), ...text.replace(/\n$/, '').split('\n'), '', ...lines.slice(end)].join('\n');
+}
+
+const only = process.argv.find((a) => a.startsWith('--only='))?.slice('--only='.length).split(',');
+if (only) {
+  for (const name of only) if (!sections[name]) throw new Error(`unknown section "${name}" (known: ${Object.keys(sections).join(', ')})`);
+  let md = readFileSync(join(root, 'BENCHMARKS.md'), 'utf8');
+  const resultsFile = join(root, 'build/bench/results.json');
+  const results = existsSync(resultsFile) ? JSON.parse(readFileSync(resultsFile, 'utf8')) : {};
+  for (const name of only) {
+    const section = sections[name];
+    const result = { ...(await section.run()), load: load() };
+    console.log(`${name}: ${JSON.stringify(result)}`);
+    results[section.key] = { date, machine, ...result };
+    md = spliceSection(md, section, section.markdown(result, { date, machine, load: result.load }));
+  }
+  writeFileSync(resultsFile, `${JSON.stringify(results, null, 2)}\n`);
+  writeFileSync(join(root, 'BENCHMARKS.md'), md);
+  console.log(`wrote the ${only.join(', ')} section(s) of BENCHMARKS.md and build/bench/results.json`);
+  process.exit(0);
+}
 
 // ---- import / export of every shared SVG ------------------------------------------------------
 const files = [];
@@ -98,14 +153,17 @@ const size = {
 const skin = skinSpeed(data, time);
 const accuracy = skinAccuracy(data);
 const weightsSpeed = skinWeightsSpeed(data);
+const weightSteps = { ...skinWeightSteps(data), load: load() };
+console.log(`skin weight steps: ${JSON.stringify(weightSteps)}`);
+
+// ---- the editor in Chromium -------------------------------------------------------------------
+const editor = { ...(await editorBenchmarks(root, data, { log: console.log })), load: load() };
 
 // ---- surface (b/Surf) -------------------------------------------------------------------------
 const surface = await surfaceBenchmarks(root, data, { log: console.log });
 
 // ---- report -----------------------------------------------------------------------------------
-const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, ${(os.totalmem() / 2 ** 30).toFixed(0)} GiB, Node ${process.version}, ${os.platform()} ${os.release()}`;
-const date = new Date().toISOString().slice(0, 10);
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -179,7 +237,9 @@ ${accuracyTable.join('\n')}
 All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${f(geoRatio, 1)}×), **${f(worstRatio, 1)}×** at worst
 (the fit must beat that baseline on every file and by ≥ 2× on average).
 
+${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })}
 ${surfaceSection(surface)}
+${editorSection(editor, { date, machine, load: editor.load })}
 ## Memory and size
 
 - malloc'd bytes in the wasm heap after 20 more imports of ${bigRel.replace('svg/', '')}: **${leak}** more than before (0 = nothing leaked).

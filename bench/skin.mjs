@@ -2,7 +2,7 @@
 // the fit against the paper's baselines on every shared character.
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { SkinRig, SkinWeights, buildDomain, domainWeights, memory, outlineSamples, parseSVG } from '../dist/index.js';
+import { SkinRig, SkinWeights, SplineSet, buildDomain, domainWeights, memory, outlineSamples, parseSVG } from '../dist/index.js';
 import { mulberry32 } from '../dist/core/random.js';
 
 /** `count` handles spread over the artwork: farthest-point sampling of on-curve points. */
@@ -115,4 +115,115 @@ export function skinWeightsSpeed(data) {
     out[`${kind}_total_ms`] = performance.now() - t0;
   }
   return out;
+}
+
+/** `count` of the points (x,y pairs), spread out by farthest-point sampling from the first. */
+function spreadOut(points, count) {
+  const n = points.length / 2, chosen = [0], dist = new Float64Array(n).fill(Infinity);
+  while (chosen.length < count) {
+    const last = chosen[chosen.length - 1];
+    let best = 0;
+    for (let p = 0; p < n; p++) {
+      dist[p] = Math.min(dist[p], Math.hypot(points[2 * p] - points[2 * last], points[2 * p + 1] - points[2 * last + 1]));
+      if (dist[p] > dist[best]) best = p;
+    }
+    chosen.push(best);
+  }
+  return Float64Array.from(chosen.flatMap((p) => [points[2 * p], points[2 * p + 1]]));
+}
+
+/**
+ * Median wall-clock and CPU ms (user + system, this process) of `repeats` runs of fn (each given
+ * the run's index), with the last run's result. On a shared machine the CPU time is the steadier.
+ */
+function timed(fn, repeats) {
+  const wall = [], cpu = [];
+  let last;
+  for (let i = 0; i < repeats; i++) {
+    const c0 = process.cpuUsage(), t0 = performance.now();
+    last = fn(i);
+    wall.push(performance.now() - t0);
+    const used = process.cpuUsage(c0);
+    cpu.push((used.user + used.system) / 1000);
+  }
+  return { ms: median(wall), cpu_ms: median(cpu), last };
+}
+
+/**
+ * Cost of automatic weights step by step, on the curve samples of oc_dog.svg (8 per segment)
+ * with 8 handles spread over them, a ~20k-triangle domain (formerly printed by the unit tests):
+ * building the domain, harmonic and BBW weights, and evaluating the BBW weights at 1M points.
+ * Medians of `repeats` runs, each step warmed up first, as wall-clock and CPU time; ratios to the
+ * harmonic solve of the same run, in CPU time (the machines are shared: wall time includes
+ * waiting for a core, CPU time does not; a CPU / wall ratio above 1 would mean threads).
+ */
+export function skinWeightSteps(data, repeats = 3) {
+  const rel = 'svg/characters/oc_dog.svg';
+  const doc = parseSVG(readFileSync(join(data, rel), 'utf8'));
+  const set = SplineSet.from(doc.splines);
+  const samples = set.sample(8);
+  set.dispose();
+  const handles = spreadOut(samples, 8);
+  const small = buildDomain(samples, handles, { targetTriangles: 500 });
+  SkinWeights.harmonic(small).dispose(); // warm-up of the solver paths
+  SkinWeights.bbw(small).dispose();
+  buildDomain(samples, handles, { targetTriangles: 20000 });
+  const domain = timed(() => buildDomain(samples, handles, { targetTriangles: 20000 }), repeats);
+  const big = domain.last;
+  const harmonic = timed(() => SkinWeights.harmonic(big).dispose(), repeats);
+  const bbw = timed((i) => {
+    const w = SkinWeights.bbw(big);
+    if (i < repeats - 1) w.dispose();
+    return w;
+  }, repeats);
+  const weights = bbw.last;
+  const points = 1_000_000;
+  const query = new Float64Array(2 * points);
+  for (let k = 0; k < query.length; k++) query[k] = samples[k % samples.length];
+  const out = new Float64Array(points * 8);
+  weights.weightsAt(query, out);
+  const interpolate = timed(() => weights.weightsAt(query, out), repeats);
+  const steps = { domain, harmonic, bbw, weights_at_1M_points: interpolate };
+  const result = {
+    file: rel,
+    handles: 8,
+    samples: samples.length / 2,
+    triangles: big.triangles.length / 3,
+    vertices: big.vertices.length / 2,
+    repeats,
+    bbw_solves_per_handle: Array.from(weights.iterations),
+    bbw_converged: weights.converged,
+    bbw_pinned: weights.pinned,
+  };
+  weights.dispose();
+  for (const [name, t] of Object.entries(steps)) {
+    result[`${name}_ms`] = t.ms;
+    result[`${name}_cpu_ms`] = t.cpu_ms;
+    result[`${name}_over_harmonic`] = t.cpu_ms / harmonic.cpu_ms;
+  }
+  result.weights_at_ns_per_point = (interpolate.cpu_ms * 1e6) / points;
+  return result;
+}
+
+/** The subsection of BENCHMARKS.md's skinning section for skinWeightSteps. */
+export function skinWeightStepsSection(r, { date, machine, load }) {
+  const f = (x, d = 0) => x.toFixed(d);
+  const row = (label, key) => `| ${label} | ${f(r[`${key}_ms`])} | ${f(r[`${key}_cpu_ms`])} | ${f(r[`${key}_over_harmonic`], 1)} |`;
+  return `### Automatic weights step by step (${r.file.replace('svg/', '')})
+
+Measured by bench/skin.mjs (skinWeightSteps) on ${date} (${machine}; load average ${load} at the end): the ${r.samples} curve samples of
+${r.file.replace('svg/', '')} (8 per segment), ${r.handles} handles spread over them (farthest points), a
+${r.triangles}-triangle domain (${r.vertices} vertices). Medians of ${r.repeats} runs after a warm-up; the ratio is
+of CPU times (on a shared machine the wall clock also counts the wait for a core):
+
+| step | wall ms | CPU ms | CPU / harmonic |
+|---|---:|---:|---:|
+${row('domain (triangulation)', 'domain')}
+${row('harmonic weights', 'harmonic')}
+${row('BBW weights', 'bbw')}
+${row('BBW weights at 1M points (weightsAt, 8 weights each)', 'weights_at_1M_points')}
+
+BBW: ${r.bbw_solves_per_handle.join(' ')} solves per handle, converged ${r.bbw_converged}, ${r.bbw_pinned} vertices pinned to a bound;
+weightsAt ${f(r.weights_at_ns_per_point, 0)} ns of CPU per point.
+`;
 }

@@ -29,10 +29,11 @@ const NONE_COLOR = '#ff4d6d';
 const DOG = sharedData('svg/characters/oc_dog.svg');
 const DOG_BROWN = '#a16121';
 
-test('opens with the first sample drawn, within budget', async ({ page }, testInfo) => {
+// How long the editor takes to show its sample is measured by `npm run bench` (bench/editor.mjs,
+// the "Editor" section of BENCHMARKS.md), not asserted here: a wall-clock bound fails on a busy
+// machine and passes on a broken one. The test checks what "shown" means: the sample's colors.
+test('opens with the first sample drawn', async ({ page }, testInfo) => {
   await openEditor(page);
-  const shownAt = await page.evaluate(() => performance.now());
-  expect(shownAt, 'ms from navigation to the sample drawn').toBeLessThan(2000);
 
   const state = await editorState(page);
   expect(state.file).toBe(OWL);
@@ -290,19 +291,30 @@ test('wheel zoom keeps the point under the cursor; fit brings the frame back', a
   await expect(zoomLabel).toHaveText(startZoom!);
 });
 
+// The import's speed is measured by `npm run bench` (bench/editor.mjs); here the editor must show
+// the whole file: the same splines, segments and anchors as the package gives in Node.
 test('the largest shared SVG (road runner) loads and renders', async ({ page }, testInfo) => {
+  const file = sharedData('svg/illustrations/oc_road_runner_car.svg');
+  await init();
+  const doc = parseSVG(readFileSync(file, 'utf8'));
+  const stats = doc.stats();
+  // One anchor per junction and end: n+1 for an open spline of n segments, n for a closed one.
+  const anchors = doc.splines.reduce((n, s) => n + (s.closed ? s.points.length / 6 : (s.points.length / 2 - 1) / 3 + 1), 0);
+  expect(stats.elements).toBe(2056);
+  expect(stats.segments).toBeGreaterThan(10_000);
+
   await openEditor(page);
-  const t0 = Date.now();
-  await page.getByTestId('file-input').setInputFiles(sharedData('svg/illustrations/oc_road_runner_car.svg'));
+  await page.getByTestId('file-input').setInputFiles(file);
   const state = await waitForFile(page, 'oc_road_runner_car.svg');
-  const elapsed = Date.now() - t0;
   expect(state.error).toBeNull();
-  expect(state.elements).toBe(2056);
-  expect(state.segments).toBeGreaterThan(10_000);
-  expect(state.anchors).toBeGreaterThan(10_000);
-  expect(state.importMs!).toBeLessThan(2000);
-  expect(elapsed, 'ms from choosing the file to the drawing on screen').toBeLessThan(5000);
-  testInfo.annotations.push({ type: 'timing', description: `import ${state.importMs!.toFixed(0)} ms, shown after ${elapsed} ms` });
+  expect(state.elements).toBe(stats.elements);
+  expect(state.splines).toBe(doc.splines.length);
+  expect(state.segments).toBe(stats.segments);
+  expect(state.anchors).toBe(anchors);
+  // The panel's import time is the loader's own measurement of this file.
+  expect(Number.isFinite(state.importMs) && state.importMs! > 0).toBe(true);
+  await expect(page.getByTestId('status-timing')).toContainText(`imported in ${state.importMs!.toFixed(0)} ms`);
+  testInfo.annotations.push({ type: 'timing', description: `import ${state.importMs!.toFixed(0)} ms (not asserted; see npm run bench)` });
   await expect(page.getByTestId('status-warnings')).toHaveText('1121 warnings');
   await expect(page.getByTestId('warnings')).toContainText('clip-path');
 

@@ -228,10 +228,15 @@ test('keys poses on the timeline, plays them, and exports an animated SVG that m
   const start = await rigReady(page);
   expect(start.pose.every((m) => m.join() === '1,0,0,1,0,0')).toBe(true);
   await page.keyboard.press('k');
-  await page.waitForTimeout(600);
-  const playing = await skin(page);
-  expect(playing.playing).toBe(true);
-  expect(Math.abs(playing.checksum - start.checksum)).toBeGreaterThan(1);
+  expect((await skin(page)).playing).toBe(true);
+  // Playback poses the rig on animation frames: wait until a frame has moved the drawing away
+  // from the rest pose (the keyframe at 1 s bends the chest), however fast frames come.
+  await expect
+    .poll(async () => {
+      const s = await skin(page);
+      return s.playing && Math.abs(s.checksum - start.checksum) > 1;
+    }, { message: 'playing moves the drawing away from the rest pose' })
+    .toBe(true);
   await page.keyboard.press('k');
   expect((await skin(page)).playing).toBe(false);
 
@@ -252,10 +257,9 @@ test('keys poses on the timeline, plays them, and exports an animated SVG that m
   await viewer.setContent(`<body style="margin:0;background:#fff"><img id="anim" style="height:600px" src="data:image/svg+xml;base64,${Buffer.from(svg).toString('base64')}"></body>`);
   await viewer.waitForFunction(() => (document.getElementById('anim') as HTMLImageElement).complete);
   const img = viewer.locator('#anim');
+  // SMIL runs on the image's own clock: take frames until one differs from the first.
   const first = await img.screenshot();
-  await viewer.waitForTimeout(500);
-  const second = await img.screenshot();
-  expect(first.equals(second), 'two frames of the animated SVG differ').toBe(false);
+  await expect.poll(async () => (await img.screenshot()).equals(first), { message: 'a later frame of the animated SVG differs from the first' }).toBe(false);
   await viewer.close();
 });
 

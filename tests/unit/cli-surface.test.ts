@@ -277,9 +277,13 @@ interface TraceJSON {
 }
 
 let runs = 0;
+/** Wall-clock ms of the last run of the CLI, start of Node to exit: a bound on any time it reports. */
+let lastRunMs = 0;
 function run<T>(args: string[]): T {
   const out = join(dir, `out-${runs++}.json`);
+  const t0 = performance.now();
   const r = cli([...args, '--json', out]);
+  lastRunMs = performance.now() - t0;
   expect(r.stderr, args.join(' ')).toBe('');
   expect(r.code).toBe(0);
   return JSON.parse(readFileSync(out, 'utf8')) as T;
@@ -291,6 +295,17 @@ function geodesic(mesh: string, pairs: [Point, Point][]): GeodesicJSON {
 
 function trace(mesh: string, curves: Point[][], extra: string[] = []): TraceJSON {
   return run<TraceJSON>(['trace', mesh, '--curves', write(`curves-${runs}.json`, { curves }), ...extra]);
+}
+
+/**
+ * A time the CLI reports: the core's measurement of work it did (so more than 0 ms), rounded to
+ * the microsecond as the CLI writes it, and within the wall-clock time of the whole command.
+ */
+function expectReportedMs(ms: number, what: string): void {
+  expect(Number.isFinite(ms), what).toBe(true);
+  expect(ms, what).toBeGreaterThan(0);
+  expect(Math.abs(ms * 1e3 - Math.round(ms * 1e3)), `${what} is rounded to the microsecond`).toBeLessThan(1e-6);
+  expect(ms, `${what} is within the command's wall-clock time`).toBeLessThan(lastRunMs);
 }
 
 /** Every invariant of a traced curve that holds on any mesh. */
@@ -335,7 +350,7 @@ describe('splinekit geodesic', () => {
     ];
     const json = geodesic(plane.file, pairs);
     expect(json.paths).toHaveLength(pairs.length);
-    expect(json.stats.total_ms).toBeGreaterThanOrEqual(0);
+    expectReportedMs(json.stats.total_ms, 'total_ms of six paths');
     json.paths.forEach((path, i) => {
       const a = pointXYZ(mesh, pairs[i][0]), b = pointXYZ(mesh, pairs[i][1]);
       expect(Math.abs(path.length - dist(a, b)), `pair ${i}`).toBeLessThan(1e-9);
@@ -485,9 +500,11 @@ describe('splinekit trace', () => {
       expect(bezierDistance(json.curves[i].points.map((p) => p.xyz), c), `curve ${i}`).toBeLessThan(1e-3);
     }
     expect(json.stats.per_curve_ms).toHaveLength(controls.length);
-    for (const ms of json.stats.per_curve_ms) expect(ms).toBeGreaterThanOrEqual(0);
+    json.stats.per_curve_ms.forEach((ms, i) => expectReportedMs(ms, `per_curve_ms of curve ${i}`));
+    // total_ms is the sum of the per-curve times (each rounded on its own, the sum once more).
     const sum = json.stats.per_curve_ms.reduce((a, b) => a + b, 0);
     expect(Math.abs(json.stats.total_ms - sum)).toBeLessThanOrEqual(1e-3 * (controls.length + 1));
+    expectReportedMs(json.stats.total_ms, 'total_ms');
   });
 
   test('--scheme rdc, --levels and --adaptive are accepted and change the curve', () => {

@@ -1,6 +1,7 @@
 // Automatic skinning weights through the TS wrappers on the real wasm core: the triangulated
 // domain of a drawing, harmonic and bounded biharmonic weights at its curve samples, bad input,
-// leaks, and (printed, not asserted) the cost of BBW on a ~20k-triangle domain.
+// leaks. Their cost on a ~20k-triangle domain is measured by `npm run bench` (bench/skin.mjs,
+// skinWeightSteps), not here.
 import { beforeAll, describe, expect, test } from 'vitest';
 import { SplineSet, SplinekitError, init, memory, parseSVG } from '../../src/index.js';
 import { buildDomain, type Domain } from '../../src/skin/domain.js';
@@ -227,35 +228,4 @@ describe('skin weights', () => {
     for (let k = 0; k < 200; k++) cycle();
     expect(memory().used).toBe(before);
   });
-
-  test('timing on a ~20k-triangle domain with 8 handles (printed, not asserted)', () => {
-    const eight = spreadOut(samples, 8);
-    let t0 = performance.now();
-    const big = buildDomain(samples, eight, { targetTriangles: 20000 });
-    const tDomain = performance.now() - t0;
-    SkinWeights.harmonic(buildDomain(samples, eight, { targetTriangles: 500 })).dispose();  // warm-up
-    t0 = performance.now();
-    const harmonic = SkinWeights.harmonic(big);
-    const tHarmonic = performance.now() - t0;
-    t0 = performance.now();
-    const cpu = process.cpuUsage();
-    const bbw = SkinWeights.bbw(big);
-    const tBbw = performance.now() - t0;
-    const used = process.cpuUsage(cpu);
-    const cpuBbw = (used.user + used.system) / 1000;
-    const million = new Float64Array(2_000_000);
-    for (let k = 0; k < million.length; k++) million[k] = samples[k % samples.length];
-    const out = new Float64Array(1_000_000 * 8);
-    t0 = performance.now();
-    bbw.weightsAt(million, out);
-    const tInterpolate = performance.now() - t0;
-    console.log(
-      `skin weights, ${big.triangles.length / 3} triangles, ${big.vertices.length / 2} vertices, 8 handles: ` +
-        `domain ${tDomain.toFixed(0)} ms, harmonic ${tHarmonic.toFixed(0)} ms, BBW ${tBbw.toFixed(0)} ms (CPU ${cpuBbw.toFixed(0)} ms) ` +
-        `(solves per handle ${Array.from(bbw.iterations).join(' ')}, converged ${bbw.converged}, pinned ${bbw.pinned}), ` +
-        `weightsAt 1M points ${tInterpolate.toFixed(0)} ms`,
-    );
-    harmonic.dispose();
-    bbw.dispose();
-  }, 120_000);
 });
