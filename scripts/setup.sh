@@ -75,6 +75,8 @@ if [ ! -f "$stamp" ] || [ -n "$(find src tsconfig.json package.json -newer "$sta
   npx tsc -p tsconfig.json
   cp src/core/splinekit-core.mjs src/core/splinekit-core.d.mts dist/core/
   chmod +x dist/cli/splinekit.js
+  # dist/browser/splinekit.js: the package and its dependencies in one ES module for plain pages.
+  npx vite build --config scripts/browser-bundle.config.ts
   touch "$stamp"
 fi
 
