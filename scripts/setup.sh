@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Brings a fresh machine (or a stale checkout) to a buildable, testable state, doing only what is
 # missing or out of date: system packages, npm dependencies, the native build (core + tests),
-# the WebAssembly module, the TypeScript package (dist/), and with --web the editor bundle.
+# the WebAssembly module, the TypeScript package (dist/), and with --web the editor bundle and the
+# API reference.
 # Idempotent: a run with nothing to do takes a few seconds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -74,11 +75,21 @@ if [ ! -f "$stamp" ] || [ -n "$(find src tsconfig.json package.json -newer "$sta
   npx tsc -p tsconfig.json
   cp src/core/splinekit-core.mjs src/core/splinekit-core.d.mts dist/core/
   chmod +x dist/cli/splinekit.js
+  # dist/browser/splinekit.js: the package and its dependencies in one ES module for plain pages.
+  npx vite build --config scripts/browser-bundle.config.ts
   touch "$stamp"
 fi
 
-# ---- Editor bundle: build/web (only with --web) ---------------------------------------------
+# ---- Editor bundle: build/web and API reference: build/api (only with --web) ------------------
 if [ "$want_web" -eq 1 ]; then
+  astamp=build/api/.build-stamp
+  if [ ! -f "$astamp" ] || [ -n "$(find src typedoc.json tsconfig.json -newer "$astamp" -print -quit)" ]; then
+    # Fails on any exported symbol without a doc comment (typedoc.json: notDocumented, treatWarningsAsErrors).
+    step "building the API reference (build/api)"
+    npx typedoc --logLevel Warn
+    touch "$astamp"
+  fi
+
   wstamp=build/web/.build-stamp
   if [ ! -f "$wstamp" ] || [ -n "$(find src web public -newer "$wstamp" -print -quit)" ]; then
     step "building the editor (build/web)"

@@ -51,7 +51,7 @@ export {
 } from './skin/rig.js';
 export { SvgPuppet } from './skin/puppet.js';
 export { buildDomain, type Domain, type DomainOptions } from './skin/domain.js';
-export { SkinWeights, type DomainWeightKind } from './skin/weights.js';
+export { SkinWeights, type BbwOptions, type DomainWeightKind, type WeightMesh } from './skin/weights.js';
 export { computeDomainWeights, domainWeights, outlineSamples, type DomainWeightsInput } from './skin/auto-weights.js';
 export { animatedSVG, interpolateMatrix, poseAt, type AnimationOptions, type Keyframe } from './skin/animation.js';
 export {

@@ -12,9 +12,19 @@ export type SplinekitErrorCode =
   | 'unsupported'
   | 'internal';
 
+/**
+ * The error every splinekit function throws for bad input or a failed load: check `code` (stable)
+ * rather than `message` (for people).
+ */
 export class SplinekitError extends Error {
+  /** What went wrong, one of {@link SplinekitErrorCode}; stable across versions. */
   readonly code: SplinekitErrorCode;
 
+  /**
+   * @param code what went wrong
+   * @param message names the input that was wrong (file, element, path data, index)
+   * @param options `cause`: the underlying error, if any
+   */
   constructor(code: SplinekitErrorCode, message: string, options?: { cause?: unknown }) {
     super(message, options);
     this.name = 'SplinekitError';

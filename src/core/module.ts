@@ -30,7 +30,12 @@ export function core(): SplinekitCoreModule {
  * Memory of the wasm core: `used` bytes allocated by malloc now (leak and allocation checks
  * compare it around create/dispose cycles or updates) and the `heap` size (grows, never shrinks).
  */
-export function memory(): { used: number; heap: number } {
+export function memory(): {
+  /** Bytes allocated by malloc in the wasm heap now. */
+  used: number;
+  /** Size of the wasm heap in bytes (grows, never shrinks). */
+  heap: number;
+} {
   const m = core();
   return { used: m.heapUsed(), heap: m.HEAP8.length };
 }

@@ -3,7 +3,9 @@ import type { AffineMatrix, SkinRig } from './rig.js';
 
 /** A pose of every handle at a time (seconds). */
 export interface Keyframe {
+  /** When this pose is reached, in seconds from the start. */
   time: number;
+  /** One affine matrix per handle of the rig, in handle order. */
   transforms: readonly AffineMatrix[];
 }
 
@@ -50,6 +52,7 @@ export function poseAt(keyframes: readonly Keyframe[], time: number): AffineMatr
   return a.transforms.map((m, h) => interpolateMatrix(m, b.transforms[h], t));
 }
 
+/** Options of {@link animatedSVG}. */
 export interface AnimationOptions {
   /** Frames per second sampled between keyframes (every keyframe is a frame too). Default 24. */
   fps?: number;

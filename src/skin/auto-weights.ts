@@ -16,11 +16,17 @@ export function outlineSamples(doc: SvgDocument, perSegment = 8): Float64Array {
   }
 }
 
+/** What {@link computeDomainWeights} needs, as plain data (it can be posted to a Web Worker). */
 export interface DomainWeightsInput extends DomainOptions {
+  /** Points along the drawing's curves, x,y pairs (see {@link outlineSamples}). */
   outline: Float64Array;
+  /** The rig's point handles. */
   handles: readonly SkinHandle[];
+  /** Which weights to solve. */
   kind: DomainWeightKind;
+  /** Where the rig needs the weights (see `SkinRig.weightQueries`). */
   queries: WeightQueries;
+  /** Called with a stage name and the fraction done (0..1) as the work goes on. */
   onProgress?: (stage: string, fraction: number) => void;
 }
 
@@ -29,7 +35,10 @@ export interface DomainWeightsInput extends DomainOptions {
  * solves on it, evaluates at the queries. Needs nothing but `await init()`, so it runs in a Web
  * Worker as well as in Node.
  */
-export function computeDomainWeights(input: DomainWeightsInput): PrecomputedWeights & { triangles: number } {
+export function computeDomainWeights(input: DomainWeightsInput): PrecomputedWeights & {
+  /** Number of triangles of the domain the weights were solved on. */
+  triangles: number;
+} {
   const progress = input.onProgress ?? (() => {});
   progress('triangulating', 0);
   const domain = buildDomain(input.outline, input.handles, input);
@@ -57,6 +66,9 @@ export function domainWeights(
   handles: readonly SkinHandle[],
   kind: DomainWeightKind,
   options: DomainOptions & { samples?: number } = {},
-): PrecomputedWeights & { triangles: number } {
+): PrecomputedWeights & {
+  /** Number of triangles of the domain the weights were solved on. */
+  triangles: number;
+} {
   return computeDomainWeights({ ...options, outline: outlineSamples(doc), handles, kind, queries: SkinRig.weightQueries(doc, options.samples ?? 100) });
 }

@@ -16,6 +16,7 @@ import { mulberry32 } from '../core/random.js';
 type ConstrainautorClass = new (del: Delaunator<Float64Array>, edges?: readonly [number, number][]) => { constrainAll(edges: readonly [number, number][]): unknown };
 const Constrainautor = ConstrainautorImport as unknown as ConstrainautorClass;
 
+/** Options of {@link buildDomain}: the outline and the density of the domain's triangle mesh. */
 export interface DomainOptions {
   /**
    * The domain's outline: a closed polygon as x,y pairs (the closing edge is implied), e.g. the

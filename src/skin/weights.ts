@@ -4,6 +4,7 @@ import type { SkinWeightsHandle } from '../core/splinekit-core.mjs';
 import type { Domain } from './domain.js';
 import type { WeightSource } from './rig.js';
 
+/** Weights solved on a triangulated domain: harmonic (Laplace) or Bounded Biharmonic Weights. */
 export type DomainWeightKind = 'harmonic' | 'bbw';
 
 /** A triangle mesh with point handles at some of its vertices (e.g. a `Domain` from buildDomain). */
@@ -43,9 +44,13 @@ export const DEFAULT_BBW: Required<BbwOptions> = {
  * A `WeightSource` for SkinRig. Create with `harmonic`/`bbw`, query, then `dispose()`.
  */
 export class SkinWeights implements WeightSource {
+  /** Which weights were solved. */
   readonly kind: DomainWeightKind;
+  /** Number of handles (#H), one weight function each. */
   readonly handleCount: number;
+  /** Number of mesh vertices (#V). */
   readonly vertexCount: number;
+  /** Number of mesh triangles (#F). */
   readonly triangleCount: number;
   /** Weights at the mesh vertices: #V × #H, row-major. */
   readonly vertexWeights: Float64Array;
@@ -133,6 +138,7 @@ export class SkinWeights implements WeightSource {
     return this.live().triangleGradients().slice();
   }
 
+  /** Frees the weights' wasm memory; the object cannot be queried afterwards (a second call does nothing). */
   dispose(): void {
     this.handle?.delete();
     this.handle = undefined;

@@ -25,6 +25,7 @@ export class Bezier {
     return target;
   }
 
+  /** Point at t (the same as `derivative(seg, t, 0, target)`). */
   static point(seg: ArrayLike<number>, t: number, target?: [number, number]): [number, number] {
     return Bezier.derivative(seg, t, 0, target);
   }

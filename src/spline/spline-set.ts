@@ -16,6 +16,7 @@ export interface ContinuityOptions {
   ratioTolerance?: number;
 }
 
+/** The tolerances `parseSVG` and {@link SplineSet.classify} use where options leave one out. */
 export const DEFAULT_CONTINUITY: Required<ContinuityOptions> = {
   relativeTolerance: 1e-6,
   angleTolerance: 1e-2,
@@ -28,6 +29,7 @@ export const DEFAULT_CONTINUITY: Required<ContinuityOptions> = {
  */
 export class SplineSet {
   private handle: SplineSetHandle | undefined;
+  /** Number of splines in the set. */
   readonly splineCount: number;
 
   private constructor(handle: SplineSetHandle, splineCount: number) {
@@ -69,6 +71,7 @@ export class SplineSet {
     return this.live();
   }
 
+  /** Number of cubic segments over all splines of the set. */
   get segmentCount(): number {
     return this.live().segmentCount();
   }
@@ -131,6 +134,7 @@ export class SplineSet {
     return h.resultF64().slice();
   }
 
+  /** Frees the set's wasm memory; the set cannot be used afterwards (a second call does nothing). */
   dispose(): void {
     this.handle?.delete();
     this.handle = undefined;

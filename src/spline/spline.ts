@@ -10,9 +10,12 @@
 /** What is preserved at a junction; 'angle' and 'none' are only ever set by the user. */
 export type ContinuityKind = 'none' | 'C0' | 'C1' | 'G1' | 'angle';
 
+/** Every {@link ContinuityKind}, from the weakest ('none', a break) to the user-only 'angle'. */
 export const CONTINUITY_KINDS: readonly ContinuityKind[] = ['none', 'C0', 'C1', 'G1', 'angle'];
 
+/** The continuity at one junction of a spline, as detected on import or set by the user. */
 export interface ContinuityTag {
+  /** What is preserved at the junction. */
   kind: ContinuityKind;
   /** |H_out − P| / |P − H_in| at import (1 for C1, the kept ratio for G1, 0 if a handle is degenerate). */
   ratio: number;
@@ -20,7 +23,12 @@ export interface ContinuityTag {
   angle: number;
 }
 
+/**
+ * A chain of cubic Bézier segments with one continuity tag per junction (see the module comment
+ * for the point layout).
+ */
 export interface Spline {
+  /** Whether the last segment ends at point 0 (3n points) rather than at its own end (3n+1). */
   closed: boolean;
   /** x,y pairs: 2·(3n+1) numbers when open, 2·3n when closed. */
   points: Float64Array;

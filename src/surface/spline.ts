@@ -6,8 +6,10 @@
 import { SplinekitError, checkStatus } from '../core/errors.js';
 import type { MeshPoint, MeshPointLike, SurfaceMesh } from './mesh.js';
 
+/** Subdivision scheme of curves on a mesh: OLR (Lane–Riesenfeld) or RDC (de Casteljau), b/Surf §4. */
 export type SurfaceScheme = 'olr' | 'rdc';
 
+/** How a curve on the mesh is subdivided; every field is optional. */
 export interface TraceOptions {
   /** Subdivision scheme. Default 'olr'. */
   scheme?: SurfaceScheme;
@@ -17,9 +19,11 @@ export interface TraceOptions {
   adaptive?: number;
 }
 
+/** A curve traced on the mesh, as mesh points and as 3D positions. */
 export interface TracedCurve {
   /** The polyline on the surface: P0, every point and edge crossing, P3. */
   points: MeshPoint[];
+  /** The same polyline in 3D: x,y,z per point of `points`. */
   xyz: Float64Array;
 }
 
@@ -36,7 +40,10 @@ export function traceArgs(options: TraceOptions = {}): [number, number, number] 
 }
 
 /** Traces one cubic Bézier curve given by 4 control points on the mesh. */
-export function traceBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], options?: TraceOptions): TracedCurve & { ms: number } {
+export function traceBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], options?: TraceOptions): TracedCurve & {
+  /** Time the core spent tracing, in milliseconds (measured inside wasm). */
+  ms: number;
+} {
   if (controls.length !== 4) throw new SplinekitError('invalid-input', `a cubic curve needs 4 control points (got ${controls.length})`);
   mesh.writePoints(controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
   checkStatus(mesh.handle.trace(1, ...traceArgs(options)), 'trace', () => mesh.handle.error());
@@ -51,7 +58,9 @@ export function evalBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[]
   return mesh.readPoints()[0];
 }
 
+/** A surface spline as plain data (what `toJSON` writes and `fromJSON` reads). */
 export interface SurfaceSplineJSON {
+  /** Whether the last segment ends at point 0 (3n points) rather than at its own end (3n+1). */
   closed: boolean;
   /** Control points: anchors at 3k, handles between (3n+1 open, 3n closed). */
   points: MeshPoint[];
@@ -63,12 +72,19 @@ function clonePoint(p: MeshPoint): MeshPoint {
   return { face: p.face, uv: [p.uv[0], p.uv[1]] };
 }
 
+/**
+ * A cubic Bézier spline on a mesh, edited like a 2D spline: anchors at every third control point
+ * with their handles between. Holds no wasm memory of its own (the mesh does).
+ */
 export class SurfaceSpline {
+  /** The mesh the spline lies on. */
   readonly mesh: SurfaceMesh;
   private _points: MeshPoint[];
   private _smooth: boolean[];
+  /** Whether the spline is closed (fixed at creation). */
   readonly closed: boolean;
 
+  /** A spline from its control points; throws SplinekitError('invalid-input') for a wrong count or a bad point. */
   constructor(mesh: SurfaceMesh, json: SurfaceSplineJSON) {
     this.mesh = mesh;
     const n = json.points?.length ?? 0;
@@ -95,18 +111,22 @@ export class SurfaceSpline {
     return new SurfaceSpline(mesh, { closed, points, smooth: a.map(() => false) });
   }
 
+  /** The spline `toJSON` wrote (the same as `new SurfaceSpline(mesh, json)`). */
   static fromJSON(mesh: SurfaceMesh, json: SurfaceSplineJSON): SurfaceSpline {
     return new SurfaceSpline(mesh, json);
   }
 
+  /** The spline as plain data (copies of its points and smooth flags). */
   toJSON(): SurfaceSplineJSON {
     return { closed: this.closed, points: this._points.map(clonePoint), smooth: [...this._smooth] };
   }
 
+  /** The control points: anchors at 3k, handles between (read-only; edit with the methods). */
   get points(): readonly MeshPoint[] {
     return this._points;
   }
 
+  /** Number of cubic segments. */
   get segmentCount(): number {
     return this.closed ? this._points.length / 3 : (this._points.length - 1) / 3;
   }
@@ -118,6 +138,7 @@ export class SurfaceSpline {
     return [0, 1, 2, 3].map((i) => this._points[(3 * s + i) % n]);
   }
 
+  /** Whether the anchor at control point `anchor` (a multiple of 3) keeps its handles collinear. */
   isSmooth(anchor: number): boolean {
     return this._smooth[this.anchorIndex(anchor)];
   }
@@ -218,7 +239,12 @@ export class SurfaceSpline {
   }
 
   /** Traces every segment; segmentStarts[s] is the index (in points) where segment s begins. */
-  trace(options?: TraceOptions): TracedCurve & { segmentStarts: Int32Array; ms: number } {
+  trace(options?: TraceOptions): TracedCurve & {
+    /** Index in `points` where each segment begins. */
+    segmentStarts: Int32Array;
+    /** Time the core spent tracing, in milliseconds (measured inside wasm). */
+    ms: number;
+  } {
     const segments = this.segmentCount;
     const all: MeshPoint[] = [];
     for (let s = 0; s < segments; s++) all.push(...this.segment(s));

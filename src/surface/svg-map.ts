@@ -9,6 +9,7 @@ import type { SvgDocument } from '../svg/document.js';
 import type { MeshPointLike, SurfaceMesh } from './mesh.js';
 import { SurfaceSpline } from './spline.js';
 
+/** Where and how large {@link mapSplines} puts the drawing on the mesh. */
 export interface SvgMapOptions {
   /** Where the drawing's centre (the centre of its bounds) goes. */
   center: MeshPointLike;

@@ -7,8 +7,11 @@ import type { ResolvedStyle } from './style.js';
 
 /** Something the model keeps as is (or could not carry), reported once per kind. */
 export interface SvgWarning {
+  /** Machine-readable kind, e.g. 'paint-server'; one warning per kind. */
   code: string;
+  /** What was kept or dropped, for people (names the first element it happened to). */
   message: string;
+  /** How many times this kind occurred in the file. */
   count: number;
 }
 
@@ -16,14 +19,17 @@ export interface SvgWarning {
 export interface SvgShape {
   /** Element name in the file: 'path', 'rect', 'circle', 'ellipse', 'line', 'polyline', 'polygon'. */
   tag: string;
+  /** The element's `id` attribute, or null. */
   id: string | null;
   /** Line of the element in the file (1-based), 0 if unknown. */
   line: number;
   /** This shape's splines are splines[firstSpline … firstSpline + splineCount). */
   firstSpline: number;
+  /** Number of splines this shape owns (a path with several subpaths has several). */
   splineCount: number;
   /** The element's user space → document space (its own transform and its ancestors'). */
   transform: Matrix;
+  /** The paint the shape is drawn with, resolved through CSS and inheritance. */
   style: ResolvedStyle;
   /** Ids (or tag names) of the `use` elements this instance was drawn through, outermost first. */
   via: string[];
@@ -31,18 +37,32 @@ export interface SvgShape {
 
 /** Counts `splinekit info` reports. */
 export interface SvgStats {
+  /** Drawn shape instances (`shapes.length`). */
   elements: number;
+  /** Splines over all shapes. */
   splines: number;
+  /** Cubic segments over all splines. */
   segments: number;
+  /** Number of junctions with each continuity kind. */
   continuity: Record<ContinuityKind, number>;
+  /** Occurrences over all warnings (the sum of their `count`). */
   warnings: number;
 }
 
 /** The JSON schema shared by the CLI commands (`splinekit info --json`, skin, …). */
 export interface SplinesJSON {
-  splines: { closed: boolean; points: [number, number][]; continuity: ContinuityKind[] }[];
+  /** The splines in document order. */
+  splines: {
+    /** Whether the spline is closed (3n points) or open (3n+1). */
+    closed: boolean;
+    /** Control points in document space as [x, y] pairs. */
+    points: [number, number][];
+    /** The kind of each junction's continuity tag. */
+    continuity: ContinuityKind[];
+  }[];
 }
 
+/** Options of {@link SvgDocument.toSVG}. */
 export interface ExportOptions {
   /**
    * 'changed' (default) rewrites only shapes whose geometry differs from the file, so untouched
@@ -97,9 +117,11 @@ export class SvgDocument {
   readonly splines: Spline[];
   /** Drawn shapes in document order; each owns a run of `splines`. */
   readonly shapes: SvgShape[];
+  /** What the model kept as is or could not carry, one entry per kind. */
   readonly warnings: SvgWarning[];
   /** Viewport size of the root `svg` (its width/height, else its viewBox size, else the bounds). */
   readonly width: number;
+  /** Viewport height of the root `svg` (like `width`). */
   readonly height: number;
   /** The root's viewBox, or null: maps document space to the viewport. */
   readonly viewBox: [number, number, number, number] | null;
@@ -149,6 +171,7 @@ export class SvgDocument {
     });
   }
 
+  /** Counts of shapes, splines, segments, junction kinds and warnings (what `splinekit info` prints). */
   stats(): SvgStats {
     const continuity: Record<ContinuityKind, number> = { none: 0, C0: 0, C1: 0, G1: 0, angle: 0 };
     let segments = 0;

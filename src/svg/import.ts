@@ -9,6 +9,7 @@ import { pathDataToSplines, type RawSpline } from './path-data.js';
 import { circlePath, ellipseElementPath, length, linePath, polyPath, rectPath, type Viewport } from './shapes.js';
 import { ROOT_STYLE, StyleSheet, declarationsOf, inherit, resolve, type StyleContext } from './style.js';
 
+/** Options of {@link parseSVG}; every field is optional. */
 export interface ParseOptions {
   /** Name of the input in error messages (e.g. the file name). Default 'SVG'. */
   name?: string;
@@ -25,6 +26,7 @@ export interface ParseOptions {
   maxDepth?: number;
 }
 
+/** The largest input `parseSVG` accepts by default: 32 MiB. */
 export const DEFAULT_MAX_BYTES = 32 * 1024 * 1024;
 /** Default of {@link ParseOptions.maxElements}. */
 export const DEFAULT_MAX_ELEMENTS = 200_000;

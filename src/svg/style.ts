@@ -9,14 +9,21 @@
 export interface ResolvedStyle {
   /** 'none', a CSS color, or a `url(#id)` reference (see `SvgDocument.paintColor`). */
   fill: string;
+  /** `fill-opacity`, 0..1. */
   fillOpacity: number;
+  /** `fill-rule`. */
   fillRule: 'nonzero' | 'evenodd';
+  /** Like `fill`: 'none', a CSS color or a `url(#id)` reference. */
   stroke: string;
+  /** `stroke-opacity`, 0..1. */
   strokeOpacity: number;
   /** In the shape's own user units (scale it by the shape's transform to draw in document space). */
   strokeWidth: number;
+  /** `stroke-linecap`. */
   strokeLinecap: 'butt' | 'round' | 'square';
+  /** `stroke-linejoin`. */
   strokeLinejoin: 'miter' | 'round' | 'bevel' | 'miter-clip' | 'arcs';
+  /** `stroke-miterlimit`. */
   strokeMiterlimit: number;
   /** Product of the `opacity` of the shape and its ancestors. */
   opacity: number;
