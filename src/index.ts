@@ -60,7 +60,17 @@ export {
   type MeshPoint,
   type MeshPointLike,
 } from './surface/mesh.js';
-export { parseMesh, meshFormatOf, DEFAULT_MAX_MESH_BYTES, type MeshArrays, type MeshFormat, type MeshParseOptions } from './surface/mesh-io.js';
+export {
+  parseMesh,
+  meshFormatOf,
+  meshFormatList,
+  DEFAULT_MAX_MESH_BYTES,
+  MESH_FILE_ACCEPT,
+  MESH_FORMATS,
+  type MeshArrays,
+  type MeshFormat,
+  type MeshParseOptions,
+} from './surface/mesh-io.js';
 export {
   SurfaceSpline,
   evalBezier,
