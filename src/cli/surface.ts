@@ -5,7 +5,7 @@
  */
 import { basename } from 'node:path';
 import { DEFAULT_MAX_MESH_BYTES, SplinekitError, SurfaceMesh, randomMeshPoints, traceBezier, type MeshPoint, type MeshPointLike, type TraceOptions } from '../index.js';
-import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './splinekit.js';
+import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
 async function loadMesh(path: string): Promise<SurfaceMesh> {
   return SurfaceMesh.load(readInput(path, DEFAULT_MAX_MESH_BYTES), basename(path));
