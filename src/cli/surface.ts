@@ -5,6 +5,7 @@
  */
 import { basename } from 'node:path';
 import { DEFAULT_MAX_MESH_BYTES, SplinekitError, SurfaceMesh, randomMeshPoints, traceBezier, type MeshPoint, type MeshPointLike, type TraceOptions } from '../index.js';
+import { meshHandles } from '../surface/mesh-handle.js';
 import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
 async function loadMesh(path: string): Promise<SurfaceMesh> {
@@ -55,7 +56,7 @@ export const geodesic: Command = {
       let total = 0;
       const paths = pairs.map(([a, b]) => {
         const path = mesh.shortestPath(a, b);
-        total += mesh.handle.milliseconds();
+        total += meshHandles.get(mesh).milliseconds();
         const points: number[][] = [];
         for (let i = 0; i < path.xyz.length; i += 3) points.push([path.xyz[i], path.xyz[i + 1], path.xyz[i + 2]]);
         return { length: path.length, points };

@@ -1,6 +1,7 @@
 import { core } from '../core/module.js';
 import { checkStatus } from '../core/errors.js';
 import type { SplineSetHandle } from '../core/splinekit-core.mjs';
+import { splineSetHandles } from './spline-set-handle.js';
 import { CONTINUITY_KINDS, type ContinuityTag, type Spline } from './spline.js';
 
 /** Tolerances for continuity detection (see wasm/core/common/continuity.h). */
@@ -27,11 +28,11 @@ export const DEFAULT_CONTINUITY: Required<ContinuityOptions> = {
  * (bounds, continuity, sampling, arc lengths). Create, query, dispose.
  */
 export class SplineSet {
-  private handle: SplineSetHandle | undefined;
+  /** Number of splines in the set. */
   readonly splineCount: number;
 
   private constructor(handle: SplineSetHandle, splineCount: number) {
-    this.handle = handle;
+    splineSetHandles.attach(this, handle);
     this.splineCount = splineCount;
   }
 
@@ -60,13 +61,7 @@ export class SplineSet {
   }
 
   private live(): SplineSetHandle {
-    if (!this.handle) throw new Error('SplineSet used after dispose()');
-    return this.handle;
-  }
-
-  /** @internal The wasm handle, for other capabilities' bindings that take a spline set. */
-  raw(): SplineSetHandle {
-    return this.live();
+    return splineSetHandles.get(this);
   }
 
   get segmentCount(): number {
@@ -131,8 +126,8 @@ export class SplineSet {
     return h.resultF64().slice();
   }
 
+  /** Frees the wasm memory; the set cannot be queried afterwards (a second call does nothing). */
   dispose(): void {
-    this.handle?.delete();
-    this.handle = undefined;
+    splineSetHandles.release(this);
   }
 }
