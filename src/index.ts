@@ -75,10 +75,9 @@ export {
   SurfaceSpline,
   evalBezier,
   traceBezier,
-  type SurfaceScheme,
   type SurfaceSplineJSON,
-  type TraceOptions,
   type TracedCurve,
 } from './surface/spline.js';
+export { DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SURFACE_SCHEMES, type SurfaceScheme, type TraceOptions } from './surface/trace-options.js';
 export { mapSplines, type SvgMapOptions } from './surface/svg-map.js';
 export { randomMeshPoints } from './surface/sampling.js';
