@@ -36,10 +36,11 @@ export {
 } from './svg/document.js';
 export type { ResolvedStyle } from './svg/style.js';
 export type { Matrix } from './svg/matrix.js';
+export { IDENTITY_MATRIX, type AffineMatrix } from './core/affine.js';
+/** 2D affine matrix functions (compose, apply, rotate or scale about a point, conversions): see src/core/affine.ts. */
+export * as affine from './core/affine.js';
 export {
   SkinRig,
-  IDENTITY_MATRIX,
-  type AffineMatrix,
   type SkinError,
   type SkinHandle,
   type SkinMethod,

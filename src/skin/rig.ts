@@ -1,3 +1,4 @@
+import type { AffineMatrix } from '../core/affine.js';
 import { checkStatus, SplinekitError } from '../core/errors.js';
 import { core } from '../core/module.js';
 import type { SkinRigHandle } from '../core/splinekit-core.mjs';
@@ -5,6 +6,8 @@ import { SplineSet } from '../spline/spline-set.js';
 import { splineSetHandles } from '../spline/spline-set-handle.js';
 import { CONTINUITY_KINDS, type ContinuityKind } from '../spline/spline.js';
 import type { SvgDocument } from '../svg/document.js';
+
+export { IDENTITY_MATRIX, type AffineMatrix } from '../core/affine.js';
 
 /**
  * Linear blend skinning of a drawing whose output stays cubic Bézier splines with their
@@ -80,10 +83,6 @@ export interface SkinError {
   perCurve: Float64Array;
 }
 
-/** A 2×3 affine matrix as in SVG's matrix(a b c d e f). */
-export type AffineMatrix = readonly [number, number, number, number, number, number];
-
-export const IDENTITY_MATRIX: AffineMatrix = [1, 0, 0, 1, 0, 0];
 
 export class SkinRig {
   readonly handleCount: number;
