@@ -51,6 +51,14 @@ export function scalingAbout(k: number, cx: number, cy: number): AffineMatrix {
   return [k, 0, 0, k, cx - k * cx, cy - k * cy];
 }
 
+/** The inverse, or null for a singular matrix (|det| below 1e-14 or not finite). */
+export function invert(m: AffineMatrix): AffineMatrix | null {
+  const det = m[0] * m[3] - m[1] * m[2];
+  if (!Number.isFinite(det) || Math.abs(det) < 1e-14) return null;
+  const a = m[3] / det, b = -m[1] / det, c = -m[2] / det, d = m[0] / det;
+  return [a, b, c, d, -(a * m[4] + c * m[5]), -(b * m[4] + d * m[5])];
+}
+
 /** The rotation angle of the linear part (radians), as its polar decomposition sees it. */
 export function angleOf(m: AffineMatrix): number {
   return Math.atan2(m[1] - m[2], m[0] + m[3]);

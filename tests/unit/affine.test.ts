@@ -1,7 +1,7 @@
 // The package's affine module (src/core/affine.ts) against the transformation-matrix library
 // (which SVG import uses for transform lists) as an independent implementation, and against
 // closed forms: a rotation about c keeps c and turns by θ, a scaling about c keeps c.
-import { applyToPoint, compose, rotate, scale, translate } from 'transformation-matrix';
+import { applyToPoint, compose, inverse, rotate, scale, translate } from 'transformation-matrix';
 import { describe, expect, test } from 'vitest';
 import { affine, IDENTITY_MATRIX, type AffineMatrix } from '../../src/index.js';
 import { IDENTITY } from '../../src/svg/matrix.js';
@@ -55,6 +55,18 @@ describe('affine', () => {
     near(affine.translation(4, 5), affine.fromMatrix(translate(4, 5)));
     // The polar angle of a rotation composed with a scaling is the rotation's.
     expect(affine.angleOf(affine.multiply(r, s))).toBeCloseTo(theta, 12);
+  });
+
+  test('invert: m·m⁻¹ = identity, and the library agrees; null for a singular matrix', () => {
+    for (let k = 0; k < 20; k++) {
+      const m = randomMatrix();
+      const inv = affine.invert(m)!;
+      near(affine.multiply(m, inv), IDENTITY_MATRIX, 1e-9);
+      near(affine.multiply(inv, m), IDENTITY_MATRIX, 1e-9);
+      near(inv, affine.fromMatrix(inverse(affine.toMatrix(m))), 1e-9);
+    }
+    expect(affine.invert([1, 2, 2, 4, 5, 6])).toBeNull();
+    expect(affine.invert([0, 0, 0, 0, 1, 1])).toBeNull();
   });
 
   test('sameMatrix and isFiniteMatrix', () => {
