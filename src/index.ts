@@ -37,10 +37,11 @@ export {
 } from './svg/document.js';
 export type { ResolvedStyle } from './svg/style.js';
 export type { Matrix } from './svg/matrix.js';
+export { IDENTITY_MATRIX, type AffineMatrix } from './core/affine.js';
+/** 2D affine matrix functions (compose, apply, rotate or scale about a point, conversions): see src/core/affine.ts. */
+export * as affine from './core/affine.js';
 export {
   SkinRig,
-  IDENTITY_MATRIX,
-  type AffineMatrix,
   type SkinError,
   type SkinHandle,
   type SkinMethod,
@@ -62,15 +63,24 @@ export {
   type MeshPointLike,
 } from './surface/mesh.js';
 export { meshPointNormal, meshPointPosition, vertexNormals } from './surface/mesh-point.js';
-export { parseMesh, meshFormatOf, DEFAULT_MAX_MESH_BYTES, type MeshArrays, type MeshFormat, type MeshParseOptions } from './surface/mesh-io.js';
+export {
+  parseMesh,
+  meshFormatOf,
+  meshFormatList,
+  DEFAULT_MAX_MESH_BYTES,
+  MESH_FILE_ACCEPT,
+  MESH_FORMATS,
+  type MeshArrays,
+  type MeshFormat,
+  type MeshParseOptions,
+} from './surface/mesh-io.js';
 export {
   SurfaceSpline,
   evalBezier,
   traceBezier,
-  type SurfaceScheme,
   type SurfaceSplineJSON,
-  type TraceOptions,
   type TracedCurve,
 } from './surface/spline.js';
+export { DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SURFACE_SCHEMES, type SurfaceScheme, type TraceOptions } from './surface/trace-options.js';
 export { mapSplines, type SvgMapOptions } from './surface/svg-map.js';
 export { randomMeshPoints } from './surface/sampling.js';

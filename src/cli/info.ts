@@ -1,6 +1,6 @@
 import { basename } from 'node:path';
 import { DEFAULT_MAX_BYTES, parseSVG } from '../index.js';
-import { UsageError, parse, readInput, writeJSON, type Command } from './splinekit.js';
+import { UsageError, parse, readInput, writeJSON, type Command } from './common.js';
 
 const usage = `usage: splinekit info <file.svg> [--json out.json]
 

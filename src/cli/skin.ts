@@ -2,7 +2,7 @@ import { writeFileSync } from 'node:fs';
 import { basename } from 'node:path';
 import { DEFAULT_MAX_BYTES, SkinRig, SplinekitError, parseSVG, type AffineMatrix, type SkinHandle, type SkinRigOptions } from '../index.js';
 import { domainWeights } from '../skin/auto-weights.js';
-import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './splinekit.js';
+import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
 const usage = `usage: splinekit skin <in.svg> --handles <handles.json> --pose <pose.json>
        [--weights shepard|harmonic|bbw] [--method fit|naive] [--flexible] [--samples N]

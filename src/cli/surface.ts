@@ -4,8 +4,9 @@
  * the file's order; outputs use the same convention.
  */
 import { basename } from 'node:path';
-import { DEFAULT_MAX_MESH_BYTES, SplinekitError, SurfaceMesh, randomMeshPoints, traceBezier, type MeshPoint, type MeshPointLike, type TraceOptions } from '../index.js';
-import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './splinekit.js';
+import { DEFAULT_MAX_MESH_BYTES, DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SplinekitError, SurfaceMesh, randomMeshPoints, traceBezier, type MeshPoint, type MeshPointLike, type TraceOptions } from '../index.js';
+import { meshHandles } from '../surface/mesh-handle.js';
+import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
 async function loadMesh(path: string): Promise<SurfaceMesh> {
   return SurfaceMesh.load(readInput(path, DEFAULT_MAX_MESH_BYTES), basename(path));
@@ -55,7 +56,7 @@ export const geodesic: Command = {
       let total = 0;
       const paths = pairs.map(([a, b]) => {
         const path = mesh.shortestPath(a, b);
-        total += mesh.handle.milliseconds();
+        total += meshHandles.get(mesh).milliseconds();
         const points: number[][] = [];
         for (let i = 0; i < path.xyz.length; i += 3) points.push([path.xyz[i], path.xyz[i + 1], path.xyz[i + 2]]);
         return { length: path.length, points };
@@ -74,8 +75,8 @@ export const geodesic: Command = {
 const traceUsage = `usage: splinekit trace <mesh> (--curves <curves.json> | --random N [--seed S])
        [--scheme olr|rdc] [--levels K | --adaptive DEG] [--json out.json]
 
-Traces cubic Bézier curves on the mesh by subdivision (b/Surf §3.5-§4): OLR (default, 5 levels)
-or RDC (4 levels), uniform or adaptive with an angle threshold in degrees. curves.json:
+Traces cubic Bézier curves on the mesh by subdivision (b/Surf §3.5-§4): OLR (default, ${DEFAULT_TRACE_LEVELS.olr} levels)
+or RDC (${DEFAULT_TRACE_LEVELS.rdc} levels), uniform or adaptive with an angle threshold in degrees. curves.json:
 {"curves":[[p0,p1,p2,p3],...]} with points as in \`splinekit geodesic\`; --random N draws N
 curves with control points uniform over the surface's area (seed S, default 1). --json writes
 {"curves":[{"points":[{"face":f,"uv":[u,v],"xyz":[x,y,z]},...]}],"stats":{"total_ms":..,
@@ -108,7 +109,7 @@ export const trace: Command = {
     if (positionals.length !== 1) throw new UsageError(`expected one mesh file\n${traceUsage}`);
     if (!values.curves === (values.random === undefined)) throw new UsageError(`give either --curves or --random\n${traceUsage}`);
     if (values.levels !== undefined && values.adaptive !== undefined) throw new UsageError('--levels and --adaptive exclude each other');
-    const scheme = values.scheme ?? 'olr';
+    const scheme = values.scheme ?? DEFAULT_TRACE_SCHEME;
     if (scheme !== 'olr' && scheme !== 'rdc') throw new UsageError(`--scheme must be olr or rdc (got "${scheme}")`);
     const options: TraceOptions = { scheme, levels: integerOption(values.levels, 'levels', 0, 12) };
     if (values.adaptive !== undefined) {
@@ -149,7 +150,7 @@ export const trace: Command = {
       else {
         const sorted = [...perCurve].sort((a, b) => a - b);
         console.log(
-          `${basename(positionals[0])}: ${curves.length} curves (${scheme}, ${options.adaptive ? `adaptive ${options.adaptive}°` : `${options.levels ?? (scheme === 'olr' ? 5 : 4)} levels`}), ` +
+          `${basename(positionals[0])}: ${curves.length} curves (${scheme}, ${options.adaptive ? `adaptive ${options.adaptive}°` : `${options.levels ?? DEFAULT_TRACE_LEVELS[scheme]} levels`}), ` +
             `${curves.reduce((n, c) => n + c.points.length, 0)} points, ${round(total)} ms (median ${round(sorted[sorted.length >> 1])} ms per curve)`,
         );
       }

@@ -69,7 +69,8 @@ export interface SurfaceMeshHandle extends EmbindObject {
   positionsIn(): Float64Array;
   trianglesIn(): Int32Array;
   build(): number;
-  report(which: number): number;
+  /** The mesh report, {name: count} under the names of wasm/core/surface/mesh.h report_fields. */
+  reportFields(): Record<string, number>;
   bytes(): number;
   scale(): number;
   resizePoints(n: number): void;

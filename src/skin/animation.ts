@@ -1,5 +1,6 @@
 import { SplinekitError } from '../core/errors.js';
-import type { AffineMatrix, SkinRig } from './rig.js';
+import type { AffineMatrix } from '../core/affine.js';
+import type { SkinRig } from './rig.js';
 
 /** A pose of every handle at a time (seconds). */
 export interface Keyframe {

@@ -3,7 +3,8 @@ import { SplinekitError } from '../core/errors.js';
 import { SHAPE_ATTRIBUTE, type SvgDocument } from '../svg/document.js';
 import { invert, isIdentity, type Matrix } from '../svg/matrix.js';
 import { splinesToPathData } from '../svg/path-data.js';
-import type { AffineMatrix, SkinRig } from './rig.js';
+import type { AffineMatrix } from '../core/affine.js';
+import type { SkinRig } from './rig.js';
 
 /**
  * Drives an inline `<svg>` with a skinning rig: each pose rewrites the `d` of the paths that

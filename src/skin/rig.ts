@@ -1,9 +1,13 @@
+import type { AffineMatrix } from '../core/affine.js';
 import { checkStatus, SplinekitError } from '../core/errors.js';
 import { core } from '../core/module.js';
 import type { SkinRigHandle } from '../core/splinekit-core.mjs';
 import { SplineSet } from '../spline/spline-set.js';
+import { splineSetHandles } from '../spline/spline-set-handle.js';
 import { CONTINUITY_KINDS, type ContinuityKind } from '../spline/spline.js';
 import type { SvgDocument } from '../svg/document.js';
+
+export { IDENTITY_MATRIX, type AffineMatrix } from '../core/affine.js';
 
 /**
  * Linear blend skinning of a drawing whose output stays cubic Bézier splines with their
@@ -79,10 +83,6 @@ export interface SkinError {
   perCurve: Float64Array;
 }
 
-/** A 2×3 affine matrix as in SVG's matrix(a b c d e f). */
-export type AffineMatrix = readonly [number, number, number, number, number, number];
-
-export const IDENTITY_MATRIX: AffineMatrix = [1, 0, 0, 1, 0, 0];
 
 export class SkinRig {
   readonly handleCount: number;
@@ -108,7 +108,7 @@ export class SkinRig {
     const h = new (core().SkinRigHandle)();
     try {
       h.resizeKinds(doc.splines.reduce((n, s) => n + s.continuity.length, 0));
-      checkStatus(h.setup(set.raw(), 1, samples), 'skin', () => h.errorMessage());
+      checkStatus(h.setup(splineSetHandles.get(set), 1, samples), 'skin', () => h.errorMessage());
       return { samples: h.samplePoints().slice(), points: h.controlPoints().slice() };
     } finally {
       h.delete();
@@ -144,7 +144,7 @@ export class SkinRig {
       });
       h.resizeKinds(kinds.length);
       h.kinds().set(kinds);
-      checkStatus(h.setup(set.raw(), handles.length, samples), 'skin', () => h.errorMessage());
+      checkStatus(h.setup(splineSetHandles.get(set), handles.length, samples), 'skin', () => h.errorMessage());
       if (source === 'shepard') {
         const power = options.shepardPower ?? 2;
         if (!(power > 0)) throw new SplinekitError('invalid-input', `skin: shepardPower must be positive, got ${power}`);

@@ -1,6 +1,7 @@
 import { core } from '../core/module.js';
 import { checkStatus } from '../core/errors.js';
 import type { SplineSetHandle } from '../core/splinekit-core.mjs';
+import { splineSetHandles } from './spline-set-handle.js';
 import { CONTINUITY_KINDS, type ContinuityTag, type Spline } from './spline.js';
 
 /** Tolerances for continuity detection (see wasm/core/common/continuity.h). */
@@ -28,12 +29,11 @@ export const DEFAULT_CONTINUITY: Required<ContinuityOptions> = {
  * (bounds, continuity, sampling, arc lengths). Create, query, dispose.
  */
 export class SplineSet {
-  private handle: SplineSetHandle | undefined;
   /** Number of splines in the set. */
   readonly splineCount: number;
 
   private constructor(handle: SplineSetHandle, splineCount: number) {
-    this.handle = handle;
+    splineSetHandles.attach(this, handle);
     this.splineCount = splineCount;
   }
 
@@ -62,13 +62,7 @@ export class SplineSet {
   }
 
   private live(): SplineSetHandle {
-    if (!this.handle) throw new Error('SplineSet used after dispose()');
-    return this.handle;
-  }
-
-  /** @internal The wasm handle, for other capabilities' bindings that take a spline set. */
-  raw(): SplineSetHandle {
-    return this.live();
+    return splineSetHandles.get(this);
   }
 
   /** Number of cubic segments over all splines of the set. */
@@ -136,7 +130,6 @@ export class SplineSet {
 
   /** Frees the set's wasm memory; the set cannot be used afterwards (a second call does nothing). */
   dispose(): void {
-    this.handle?.delete();
-    this.handle = undefined;
+    splineSetHandles.release(this);
   }
 }

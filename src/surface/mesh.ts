@@ -9,28 +9,34 @@ import { core } from '../core/module.js';
 import { SplinekitError, checkStatus } from '../core/errors.js';
 import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
 import { parseMesh, type MeshParseOptions } from './mesh-io.js';
+import { meshHandles, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
+import type { MeshPoint, MeshPointLike } from './mesh-point.js';
 
-/** A point on a face: (1−u−v)·p0 + u·p1 + v·p2 of the face's vertices, in file order. */
-export interface MeshPoint {
-  face: number;
-  uv: [number, number];
-}
-/** A mesh point, or a vertex index (file order). */
-export type MeshPointLike = MeshPoint | number;
+export type { MeshPoint, MeshPointLike } from './mesh-point.js';
 
+/** What building the mesh found and repaired; counts are in file space unless noted. */
 export interface MeshInfo {
-  /** Vertices and faces (triangles after fan triangulation) as in the file. */
+  /** Vertices as in the file. */
   vertices: number;
+  /** Faces (triangles after fan triangulation) as in the file. */
   faces: number;
   /** Vertices the algorithms use: after welding and dropping unused ones, plus non-manifold splits. */
   usedVertices: number;
+  /** File vertices merged into an earlier one at the same position. */
   weldedVertices: number;
+  /** File vertices no face uses. */
   unreferencedVertices: number;
+  /** Faces with a repeated vertex (after welding): kept, but curves do not cross them. */
   degenerateFaces: number;
+  /** Edges with more than two faces: left as boundaries. */
   nonManifoldEdges: number;
+  /** Vertices whose faces form several fans: given one copy per fan. */
   nonManifoldVertices: number;
+  /** Faces whose winding was reversed to agree with their neighbours. */
   flippedFaces: number;
+  /** Closed loops of boundary edges. */
   boundaryLoops: number;
+  /** Connected parts (a face with a repeated vertex is a part of its own). */
   components: number;
   /** Bytes of wasm memory the mesh structures hold (positions, faces, adjacency, search graph). */
   bytes: number;
@@ -40,62 +46,85 @@ export interface MeshInfo {
 
 /** A geodesic path on the mesh: its start, every edge crossing, its end. */
 export interface GeodesicPath {
+  /** Its length (sum of the segment lengths in 3D). */
   length: number;
+  /** The start, every edge crossing, the end (file order). */
   points: MeshPoint[];
   /** x, y, z of each point. */
   xyz: Float64Array;
 }
 
-const REPORT = {
-  fileVertices: 0,
-  fileFaces: 1,
-  usedVertices: 2,
-  welded: 3,
-  unreferenced: 4,
-  degenerate: 5,
-  nonManifoldEdges: 6,
-  nonManifoldVertices: 7,
-  flipped: 8,
-  nonOrientable: 9,
-  boundaryEdges: 10,
-  boundaryLoops: 11,
-  components: 12,
-} as const;
+/**
+ * The counts of the core's mesh report, under the names the core gives them
+ * (wasm/core/surface/mesh.h, `report_fields`): the binding hands them on by name, so their order
+ * is written down once, in the core.
+ */
+export const MESH_REPORT_FIELDS = [
+  'file_vertices',
+  'file_faces',
+  'used_vertices',
+  'welded_vertices',
+  'unreferenced_vertices',
+  'degenerate_faces',
+  'non_manifold_edges',
+  'non_manifold_vertices',
+  'flipped_faces',
+  'non_orientable_cuts',
+  'boundary_edges',
+  'boundary_loops',
+  'components',
+] as const;
+
+/** One count of the core's mesh report (see MESH_REPORT_FIELDS). */
+export type MeshReportField = (typeof MESH_REPORT_FIELDS)[number];
+
+/** The built mesh's report from the core, checked to hold every field this package reads. */
+function readReport(handle: SurfaceMeshHandle): Record<MeshReportField, number> {
+  const fields = handle.reportFields();
+  for (const name of MESH_REPORT_FIELDS) {
+    if (typeof fields[name] !== 'number') throw new SplinekitError('internal', `the core's mesh report has no count '${name}'`);
+  }
+  return fields as Record<MeshReportField, number>;
+}
 
 function count(n: number, what: string): string {
   return `${n.toLocaleString('en-US')} ${what}`;
 }
 
+/**
+ * A triangle mesh in the wasm core, with its search structures; load with `SurfaceMesh.load` or
+ * `SurfaceMesh.fromArrays`, free with `dispose()`. The wasm object behind it is private to the
+ * package (see surface/mesh-handle.ts).
+ */
 export class SurfaceMesh {
+  /** What building the mesh found and repaired. */
   readonly info: MeshInfo;
   /** File positions (3 per vertex) and triangles (3 per face). */
   readonly positions: Float64Array;
+  /** Three file vertex indices per face (#F by 3). */
   readonly triangles: Int32Array;
   /** Bounding-box diagonal. */
   readonly scale: number;
-  /** @internal the wasm handle (shared with SurfaceSpline and mapSplines). */
-  readonly handle: SurfaceMeshHandle;
   private vertexCorner: Int32Array | null = null;
-  private disposed = false;
 
   private constructor(handle: SurfaceMeshHandle, positions: Float64Array, triangles: Int32Array) {
-    this.handle = handle;
+    meshHandles.attach(this, handle);
     this.positions = positions;
     this.triangles = triangles;
     this.scale = handle.scale();
-    const r = (k: number) => handle.report(k);
+    const r = readReport(handle);
     const info: MeshInfo = {
-      vertices: r(REPORT.fileVertices),
-      faces: r(REPORT.fileFaces),
-      usedVertices: r(REPORT.usedVertices),
-      weldedVertices: r(REPORT.welded),
-      unreferencedVertices: r(REPORT.unreferenced),
-      degenerateFaces: r(REPORT.degenerate),
-      nonManifoldEdges: r(REPORT.nonManifoldEdges),
-      nonManifoldVertices: r(REPORT.nonManifoldVertices),
-      flippedFaces: r(REPORT.flipped),
-      boundaryLoops: r(REPORT.boundaryLoops),
-      components: r(REPORT.components),
+      vertices: r.file_vertices,
+      faces: r.file_faces,
+      usedVertices: r.used_vertices,
+      weldedVertices: r.welded_vertices,
+      unreferencedVertices: r.unreferenced_vertices,
+      degenerateFaces: r.degenerate_faces,
+      nonManifoldEdges: r.non_manifold_edges,
+      nonManifoldVertices: r.non_manifold_vertices,
+      flippedFaces: r.flipped_faces,
+      boundaryLoops: r.boundary_loops,
+      components: r.components,
       bytes: handle.bytes(),
       warnings: [],
     };
@@ -106,7 +135,7 @@ export class SurfaceMesh {
     if (info.nonManifoldEdges) w.push(`${count(info.nonManifoldEdges, 'edges')} have more than two faces: treated as boundaries`);
     if (info.nonManifoldVertices) w.push(`${count(info.nonManifoldVertices, 'vertices')} join separate fans of faces: split`);
     if (info.flippedFaces) w.push(`${count(info.flippedFaces, 'faces')} were wound against their neighbours: re-oriented`);
-    if (r(REPORT.nonOrientable)) w.push(`the surface is not orientable: cut along ${count(r(REPORT.nonOrientable), 'edges')}`);
+    if (r.non_orientable_cuts) w.push(`the surface is not orientable: cut along ${count(r.non_orientable_cuts, 'edges')}`);
     if (info.components > 1) w.push(`the mesh has ${info.components} separate parts: curves cannot cross between them`);
     this.info = info;
   }
@@ -145,6 +174,7 @@ export class SurfaceMesh {
     }
   }
 
+  /** Number of faces (file order, after fan triangulation). */
   get faceCount(): number {
     return this.triangles.length / 3;
   }
@@ -178,6 +208,7 @@ export class SurfaceMesh {
     return p;
   }
 
+  /** The position in space of a mesh point or vertex. */
   xyz(p: MeshPointLike): [number, number, number] {
     const q = this.resolve(p);
     const t = this.triangles, x = this.positions, f = 3 * q.face;
@@ -200,48 +231,26 @@ export class SurfaceMesh {
 
   /** The locally shortest geodesic path from a to b (b/Surf §5.1). */
   shortestPath(a: MeshPointLike, b: MeshPointLike): GeodesicPath {
-    this.writePoints([this.resolve(a, 'start'), this.resolve(b, 'end')]);
-    checkStatus(this.handle.shortestPath(), 'shortest path', () => this.handle.error());
-    return { length: this.handle.length(), points: this.readPoints(), xyz: this.handle.xyzOut().slice() };
+    const handle = writeMeshPoints(this, [this.resolve(a, 'start'), this.resolve(b, 'end')]);
+    checkStatus(handle.shortestPath(), 'shortest path', () => handle.error());
+    return { length: handle.length(), points: readMeshPoints(this), xyz: handle.xyzOut().slice() };
   }
 
   /** The straightest geodesic from a point in a direction (projected to the surface) for a length. */
   straightest(from: MeshPointLike, direction: readonly [number, number, number], length: number): GeodesicPath {
-    this.writePoints([this.resolve(from, 'start')]);
-    checkStatus(this.handle.straightest(direction[0], direction[1], direction[2], length), 'straightest geodesic', () => this.handle.error());
-    return { length: this.handle.length(), points: this.readPoints(), xyz: this.handle.xyzOut().slice() };
+    const handle = writeMeshPoints(this, [this.resolve(from, 'start')]);
+    checkStatus(handle.straightest(direction[0], direction[1], direction[2], length), 'straightest geodesic', () => handle.error());
+    return { length: handle.length(), points: readMeshPoints(this), xyz: handle.xyzOut().slice() };
   }
 
   /** Frees the wasm memory. The mesh (and splines on it) cannot be used afterwards. */
   dispose(): void {
-    if (this.disposed) return;
-    this.disposed = true;
-    this.handle.delete();
+    meshHandles.release(this);
   }
 
+  /** True after dispose(). */
   get isDisposed(): boolean {
-    return this.disposed;
-  }
-
-  /** @internal writes points into the handle's input buffer. */
-  writePoints(points: readonly MeshPoint[]): void {
-    if (this.disposed) throw new SplinekitError('invalid-input', 'the mesh has been disposed');
-    this.handle.resizePoints(points.length);
-    const buf = this.handle.pointsIn();
-    points.forEach((p, i) => {
-      buf[3 * i] = p.face;
-      buf[3 * i + 1] = p.uv[0];
-      buf[3 * i + 2] = p.uv[1];
-    });
-  }
-
-  /** @internal reads the handle's output points. */
-  readPoints(from = 0, to?: number): MeshPoint[] {
-    const buf = this.handle.pointsOut();
-    const end = to ?? buf.length / 3;
-    const out: MeshPoint[] = [];
-    for (let i = from; i < end; i++) out.push({ face: buf[3 * i], uv: [buf[3 * i + 1], buf[3 * i + 2]] });
-    return out;
+    return !meshHandles.has(this);
   }
 
   private check(p: MeshPoint, what: string): void {

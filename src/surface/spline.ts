@@ -4,20 +4,13 @@
  * anchors keep their handles collinear, whole splines move, turn and scale about a mesh point).
  */
 import { SplinekitError, checkStatus } from '../core/errors.js';
-import type { MeshPoint, MeshPointLike, SurfaceMesh } from './mesh.js';
+import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
+import type { SurfaceMesh } from './mesh.js';
+import { meshHandles, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
+import type { MeshPoint, MeshPointLike } from './mesh-point.js';
+import { traceArgs, type TraceOptions } from './trace-options.js';
 
-/** Subdivision scheme of curves on a mesh: OLR (Lane–Riesenfeld) or RDC (de Casteljau), b/Surf §4. */
-export type SurfaceScheme = 'olr' | 'rdc';
-
-/** How a curve on the mesh is subdivided; every field is optional. */
-export interface TraceOptions {
-  /** Subdivision scheme. Default 'olr'. */
-  scheme?: SurfaceScheme;
-  /** Uniform subdivision levels. Default 5 for OLR (35 points), 4 for RDC (48 geodesic segments). */
-  levels?: number;
-  /** Adaptive subdivision instead, with this angle threshold in degrees (the paper uses 5). */
-  adaptive?: number;
-}
+export type { SurfaceScheme, TraceOptions } from './trace-options.js';
 
 /** A curve traced on the mesh, as mesh points and as 3D positions. */
 export interface TracedCurve {
@@ -27,35 +20,23 @@ export interface TracedCurve {
   xyz: Float64Array;
 }
 
-/** @internal the binding's encoding of trace options: [scheme, levels, adaptive degrees (0: off)]. */
-export function traceArgs(options: TraceOptions = {}): [number, number, number] {
-  const scheme = options.scheme ?? 'olr';
-  if (scheme !== 'olr' && scheme !== 'rdc') throw new SplinekitError('invalid-input', `unknown scheme "${String(scheme)}" (use "olr" or "rdc")`);
-  const levels = options.levels ?? (scheme === 'olr' ? 5 : 4);
-  if (!Number.isInteger(levels) || levels < 0 || levels > 12) throw new SplinekitError('invalid-input', `levels must be an integer from 0 to 12 (got ${levels})`);
-  const adaptive = options.adaptive ?? 0;
-  if (options.adaptive !== undefined && !(adaptive > 0 && adaptive < 180))
-    throw new SplinekitError('invalid-input', `the adaptive angle must lie between 0 and 180 degrees (got ${adaptive})`);
-  return [scheme === 'olr' ? 0 : 1, levels, adaptive];
-}
-
 /** Traces one cubic Bézier curve given by 4 control points on the mesh. */
 export function traceBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], options?: TraceOptions): TracedCurve & {
   /** Time the core spent tracing, in milliseconds (measured inside wasm). */
   ms: number;
 } {
   if (controls.length !== 4) throw new SplinekitError('invalid-input', `a cubic curve needs 4 control points (got ${controls.length})`);
-  mesh.writePoints(controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
-  checkStatus(mesh.handle.trace(1, ...traceArgs(options)), 'trace', () => mesh.handle.error());
-  return { points: mesh.readPoints(), xyz: mesh.handle.xyzOut().slice(), ms: mesh.handle.curveMilliseconds(0) };
+  const handle = writeMeshPoints(mesh, controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
+  checkStatus(handle.trace(1, ...traceArgs(options)), 'trace', () => handle.error());
+  return { points: readMeshPoints(mesh), xyz: handle.xyzOut().slice(), ms: handle.curveMilliseconds(0) };
 }
 
 /** The point at parameter t of a cubic curve on the mesh (§4.1.2, §4.2.2). */
 export function evalBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], t: number, options?: TraceOptions): MeshPoint {
   if (controls.length !== 4) throw new SplinekitError('invalid-input', `a cubic curve needs 4 control points (got ${controls.length})`);
-  mesh.writePoints(controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
-  checkStatus(mesh.handle.evalCurve(t, ...traceArgs(options)), 'evaluate', () => mesh.handle.error());
-  return mesh.readPoints()[0];
+  const handle = writeMeshPoints(mesh, controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
+  checkStatus(handle.evalCurve(t, ...traceArgs(options)), 'evaluate', () => handle.error());
+  return readMeshPoints(mesh)[0];
 }
 
 /** A surface spline as plain data (what `toJSON` writes and `fromJSON` reads). */
@@ -95,6 +76,11 @@ export class SurfaceSpline {
     this.closed = closed;
     const anchors = closed ? n / 3 : (n - 1) / 3 + 1;
     this._smooth = Array.from({ length: anchors }, (_, i) => !!json.smooth?.[i]);
+  }
+
+  /** The mesh's wasm handle (throws once the mesh is disposed). */
+  private get core(): SurfaceMeshHandle {
+    return meshHandles.get(this.mesh);
   }
 
   /** A spline through the anchors with straight handles: each segment's handles at 1/3 and 2/3 of its geodesic. */
@@ -147,14 +133,14 @@ export class SurfaceSpline {
   setSmooth(anchor: number, smooth: boolean): void {
     const k = this.anchorIndex(anchor);
     this._smooth[k] = smooth;
-    if (smooth) this.editAround(anchor, (count, at) => this.mesh.handle.smoothAnchor(count, at), 'smooth anchor');
+    if (smooth) this.editAround(anchor, (count, at) => this.core.smoothAnchor(count, at), 'smooth anchor');
   }
 
   /** Moves an anchor; its handles follow by parallel transport (§5.2). */
   moveAnchor(index: number, to: MeshPointLike): void {
     this.anchorIndex(index);
     const p = this.mesh.resolve(to, 'target');
-    this.editAround(index, (count, at) => this.mesh.handle.moveAnchor(count, at, p.face, p.uv[0], p.uv[1]), 'move anchor');
+    this.editAround(index, (count, at) => this.core.moveAnchor(count, at, p.face, p.uv[0], p.uv[1]), 'move anchor');
   }
 
   /** Moves a handle; at a smooth anchor the opposite handle follows along the straightest geodesic. */
@@ -166,7 +152,7 @@ export class SurfaceSpline {
     const hasOpposite = this.closed || (anchor > 0 && anchor < this._points.length - 1);
     const smooth = hasOpposite && this._smooth[this.anchorIndex(anchor % this._points.length)];
     this.editAround(anchor % this._points.length, (count, at) =>
-      this.mesh.handle.moveHandle(count, at + (index - anchor), p.face, p.uv[0], p.uv[1], smooth), 'move handle');
+      this.core.moveHandle(count, at + (index - anchor), p.face, p.uv[0], p.uv[1], smooth), 'move handle');
   }
 
   /**
@@ -175,9 +161,9 @@ export class SurfaceSpline {
    */
   insert(segment: number, t: number, options?: TraceOptions): number {
     this.checkSegment(segment);
-    this.mesh.writePoints(this.segment(segment));
-    checkStatus(this.mesh.handle.splitCurve(t, ...traceArgs(options)), 'insert point', () => this.mesh.handle.error());
-    const seven = this.mesh.readPoints();
+    writeMeshPoints(this.mesh, this.segment(segment));
+    checkStatus(this.core.splitCurve(t, ...traceArgs(options)), 'insert point', () => this.core.error());
+    const seven = readMeshPoints(this.mesh);
     const at = 3 * segment;
     const n = this._points.length;
     if (this.closed && at + 3 === n) {
@@ -223,19 +209,19 @@ export class SurfaceSpline {
   /** Translation that takes `from` to `to`, in normal coordinates about `from` (§5.2). */
   translate(from: MeshPointLike, to: MeshPointLike): void {
     const a = this.mesh.resolve(from, 'from'), b = this.mesh.resolve(to, 'to');
-    this.editAll((count) => this.mesh.handle.translateSpline(count, a.face, a.uv[0], a.uv[1], b.face, b.uv[0], b.uv[1]), 'translate');
+    this.editAll((count) => this.core.translateSpline(count, a.face, a.uv[0], a.uv[1], b.face, b.uv[0], b.uv[1]), 'translate');
   }
 
   /** Rotation by `radians` (counter-clockwise seen from outside) about `center`. */
   rotate(center: MeshPointLike, radians: number): void {
     const c = this.mesh.resolve(center, 'center');
-    this.editAll((count) => this.mesh.handle.rotateScale(count, c.face, c.uv[0], c.uv[1], radians, 1), 'rotate');
+    this.editAll((count) => this.core.rotateScale(count, c.face, c.uv[0], c.uv[1], radians, 1), 'rotate');
   }
 
   /** Scaling by `factor` about `center`. */
   scale(center: MeshPointLike, factor: number): void {
     const c = this.mesh.resolve(center, 'center');
-    this.editAll((count) => this.mesh.handle.rotateScale(count, c.face, c.uv[0], c.uv[1], 0, factor), 'scale');
+    this.editAll((count) => this.core.rotateScale(count, c.face, c.uv[0], c.uv[1], 0, factor), 'scale');
   }
 
   /** Traces every segment; segmentStarts[s] is the index (in points) where segment s begins. */
@@ -248,12 +234,12 @@ export class SurfaceSpline {
     const segments = this.segmentCount;
     const all: MeshPoint[] = [];
     for (let s = 0; s < segments; s++) all.push(...this.segment(s));
-    this.mesh.writePoints(all);
-    checkStatus(this.mesh.handle.trace(segments, ...traceArgs(options)), 'trace', () => this.mesh.handle.error());
+    writeMeshPoints(this.mesh, all);
+    checkStatus(this.core.trace(segments, ...traceArgs(options)), 'trace', () => this.core.error());
     let ms = 0;
-    for (let s = 0; s < segments; s++) ms += this.mesh.handle.curveMilliseconds(s);
-    const segmentStarts = this.mesh.handle.offsetsOut().slice(0, segments);
-    return { points: this.mesh.readPoints(), xyz: this.mesh.handle.xyzOut().slice(), segmentStarts, ms };
+    for (let s = 0; s < segments; s++) ms += this.core.curveMilliseconds(s);
+    const segmentStarts = this.core.offsetsOut().slice(0, segments);
+    return { points: readMeshPoints(this.mesh), xyz: this.core.xyzOut().slice(), segmentStarts, ms };
   }
 
   /** No wasm memory of its own: the mesh holds it. Kept for symmetry with other wrappers. */
@@ -280,30 +266,30 @@ export class SurfaceSpline {
   private editAround(anchor: number, call: (count: number, at: number) => number, what: string): void {
     const n = this._points.length;
     if (!this.closed) {
-      this.mesh.writePoints(this._points);
-      checkStatus(call(n, anchor), what, () => this.mesh.handle.error());
-      this._points = this.mesh.readPoints();
+      writeMeshPoints(this.mesh, this._points);
+      checkStatus(call(n, anchor), what, () => this.core.error());
+      this._points = readMeshPoints(this.mesh);
       return;
     }
     const shift = (anchor - 3 + n) % n;
     const run = Array.from({ length: n + 1 }, (_, i) => this._points[(shift + i) % n]);
-    this.mesh.writePoints(run);
-    checkStatus(call(n + 1, 3), what, () => this.mesh.handle.error());
-    const out = this.mesh.readPoints();
+    writeMeshPoints(this.mesh, run);
+    checkStatus(call(n + 1, 3), what, () => this.core.error());
+    const out = readMeshPoints(this.mesh);
     for (let i = 0; i < n; i++) this._points[(shift + i) % n] = out[i];
   }
 
   private editAll(call: (count: number) => number, what: string): void {
-    this.mesh.writePoints(this._points);
-    checkStatus(call(this._points.length), what, () => this.mesh.handle.error());
-    this._points = this.mesh.readPoints();
+    writeMeshPoints(this.mesh, this._points);
+    checkStatus(call(this._points.length), what, () => this.core.error());
+    this._points = readMeshPoints(this.mesh);
   }
 }
 
 /** The points at 1/3 and 2/3 of the shortest path from a to b. */
 function thirds(mesh: SurfaceMesh, a: MeshPoint, b: MeshPoint): [MeshPoint, MeshPoint] {
-  mesh.writePoints([a, b]);
-  checkStatus(mesh.handle.pathAt(1 / 3, 2 / 3), 'handle placement', () => mesh.handle.error());
-  const [h1, h2] = mesh.readPoints();
+  const handle = writeMeshPoints(mesh, [a, b]);
+  checkStatus(handle.pathAt(1 / 3, 2 / 3), 'handle placement', () => handle.error());
+  const [h1, h2] = readMeshPoints(mesh);
   return [h1, h2];
 }

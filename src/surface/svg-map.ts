@@ -7,6 +7,7 @@ import { SplinekitError, checkStatus } from '../core/errors.js';
 import type { Spline } from '../spline/spline.js';
 import type { SvgDocument } from '../svg/document.js';
 import type { MeshPointLike, SurfaceMesh } from './mesh.js';
+import { meshHandles, readMeshPoints } from './mesh-handle.js';
 import { SurfaceSpline } from './spline.js';
 
 /** Where and how large {@link mapSplines} puts the drawing on the mesh. */
@@ -42,7 +43,7 @@ export function mapSplines(mesh: SurfaceMesh, drawing: SvgDocument | readonly Sp
   const cx = (xmin + xmax) / 2, cy = (ymin + ymax) / 2;
   const c = mesh.resolve(options.center, 'center');
   const up = options.up ?? [0, 0, 0];
-  const handle = mesh.handle;
+  const handle = meshHandles.get(mesh);
   handle.resizeXY(total);
   const xy = handle.xyIn();
   let at = 0;
@@ -52,7 +53,7 @@ export function mapSplines(mesh: SurfaceMesh, drawing: SvgDocument | readonly Sp
       xy[at++] = s.points[i + 1] - cy;
     }
   checkStatus(handle.mapPoints(c.face, c.uv[0], c.uv[1], up[0], up[1], up[2], options.rotation ?? 0, options.size / width), 'map drawing', () => handle.error());
-  const mapped = mesh.readPoints();
+  const mapped = readMeshPoints(mesh);
   const out: SurfaceSpline[] = [];
   let first = 0;
   for (const s of usable) {

@@ -1,9 +1,15 @@
 import { compose, fromDefinition, fromTransformAttribute, inverse, type Matrix } from 'transformation-matrix';
+import { IDENTITY_MATRIX, toMatrix } from '../core/affine.js';
 
-/** An SVG affine matrix(a b c d e f): x' = a x + c y + e, y' = b x + d y + f. */
+/**
+ * An SVG affine matrix(a b c d e f) as an object: x' = a x + c y + e, y' = b x + d y + f (the form
+ * of the transformation-matrix library that parses transform lists; src/core/affine.ts has the
+ * tuple form `AffineMatrix` and the conversions).
+ */
 export type { Matrix };
 
-export const IDENTITY: Readonly<Matrix> = Object.freeze({ a: 1, b: 0, c: 0, d: 1, e: 0, f: 0 });
+/** The identity in object form: IDENTITY_MATRIX of src/core/affine.ts (frozen). */
+export const IDENTITY: Readonly<Matrix> = Object.freeze(toMatrix(IDENTITY_MATRIX));
 
 /** m1 · m2 (m2 applied first). */
 export function multiply(m1: Matrix, m2: Matrix): Matrix {

@@ -5,6 +5,7 @@ import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import ts from 'typescript';
 import { afterAll, beforeAll, expect, test } from 'vitest';
 import { repoRoot, sharedData } from './helpers.js';
 
@@ -63,4 +64,54 @@ test('the installed CLI runs with node alone on the PATH', () => {
   const bad = spawnSync(join(app, 'node_modules/.bin/splinekit'), ['info', join(app, 'package.json')], { cwd: app, env: env(), encoding: 'utf8' });
   expect(bad.status).toBe(1);
   expect(bad.stderr).toMatch(/^splinekit: package\.json: not well-formed XML|^splinekit: package\.json: /);
+});
+
+test('the packed types expose no wasm (embind) object and no raw handle', () => {
+  // Walks every type reachable from the package's exports in the installed declarations (members,
+  // signatures, type arguments, unions) with the TypeScript checker: none may be declared in the
+  // module's hand-written embind declarations, and no public member may be called `handle` or
+  // `raw`. (Private members are emitted without their types, so they expose nothing.)
+  const root = join(app, 'node_modules/splinekit/dist');
+  const program = ts.createProgram([join(root, 'index.d.ts')], { noEmit: true, skipLibCheck: true, strict: true });
+  const checker = program.getTypeChecker();
+  const entry = checker.getSymbolAtLocation(program.getSourceFile(join(root, 'index.d.ts'))!)!;
+  const exports = checker.getExportsOfModule(entry);
+  expect(exports.map((s) => s.name)).toEqual(expect.arrayContaining(['SurfaceMesh', 'SplineSet', 'SkinRig', 'SkinWeights', 'affine', 'AffineMatrix']));
+  const ours = (d: ts.Declaration) => d.getSourceFile().fileName.startsWith(root);
+  const leaks: string[] = [];
+  const seen = new Set<ts.Type>();
+  const visit = (type: ts.Type, where: string, depth = 0): void => {
+    if (seen.has(type) || depth > 12) return;
+    seen.add(type);
+    const decls = (type.aliasSymbol ?? type.getSymbol())?.getDeclarations() ?? [];
+    for (const d of decls) if (/splinekit-core\.d\.mts$/.test(d.getSourceFile().fileName)) leaks.push(`${where}: ${checker.typeToString(type)}`);
+    if (decls.length && !decls.some(ours)) return; // lib, DOM, node, three: not ours to walk
+    if (type.isUnionOrIntersection()) type.types.forEach((t) => visit(t, where, depth + 1));
+    for (const t of (type as ts.TypeReference).typeArguments ?? []) visit(t, where, depth + 1);
+    for (const t of type.aliasTypeArguments ?? []) visit(t, where, depth + 1);
+    for (const p of checker.getPropertiesOfType(type)) {
+      const d = p.valueDeclaration ?? p.getDeclarations()?.[0];
+      if (!d || !ours(d)) continue;
+      if (ts.getCombinedModifierFlags(d) & (ts.ModifierFlags.Private | ts.ModifierFlags.Protected)) continue;
+      if (p.name === 'handle' || p.name === 'raw') leaks.push(`${where}.${p.name}`);
+      visit(checker.getTypeOfSymbolAtLocation(p, d), `${where}.${p.name}`, depth + 1);
+    }
+    for (const kind of [ts.SignatureKind.Call, ts.SignatureKind.Construct]) {
+      for (const sig of checker.getSignaturesOfType(type, kind)) {
+        const decl = sig.getDeclaration();
+        if (decl && ts.getCombinedModifierFlags(decl) & ts.ModifierFlags.Private) continue;
+        sig.getParameters().forEach((p) => visit(checker.getTypeOfSymbol(p), `${where}(${p.name})`, depth + 1));
+        visit(sig.getReturnType(), `${where}()`, depth + 1);
+      }
+    }
+  };
+  for (const symbol of exports) {
+    const s = symbol.flags & ts.SymbolFlags.Alias ? checker.getAliasedSymbol(symbol) : symbol;
+    const decl = s.valueDeclaration ?? s.getDeclarations()?.[0];
+    if (!decl) continue;
+    if (s.flags & ts.SymbolFlags.Value) visit(checker.getTypeOfSymbolAtLocation(s, decl), s.name); // statics, constructors, functions
+    if (s.flags & (ts.SymbolFlags.Type | ts.SymbolFlags.Class)) visit(checker.getDeclaredTypeOfSymbol(s), s.name); // instances, interfaces
+  }
+  expect(seen.size).toBeGreaterThan(50); // the walk reached the API, not just its names
+  expect(leaks).toEqual([]);
 });

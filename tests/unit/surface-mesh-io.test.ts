@@ -7,7 +7,7 @@ import { describe, expect, test } from 'vitest';
 import { PLYLoader } from 'three/examples/jsm/loaders/PLYLoader.js';
 import { STLLoader } from 'three/examples/jsm/loaders/STLLoader.js';
 import { SplinekitError } from '../../src/core/errors.js';
-import { meshFormatOf, parseMesh, type MeshArrays } from '../../src/surface/mesh-io.js';
+import { MESH_FILE_ACCEPT, MESH_FORMATS, meshFormatList, meshFormatOf, parseMesh, type MeshArrays, type MeshFormat } from '../../src/surface/mesh-io.js';
 import { readShared, sharedData } from './helpers.js';
 
 interface ManifestMesh {
@@ -495,6 +495,28 @@ describe('format and size', () => {
         expect((e as SplinekitError).code).toBe('unsupported');
         expect((e as SplinekitError).message).toContain(name);
       }
+    }
+  });
+
+  test('one format list: every listed extension is read, the error and the accept list name them all', async () => {
+    expect([...MESH_FORMATS]).toEqual(['obj', 'off', 'ply', 'stl', 'gltf', 'glb']);
+    expect(MESH_FILE_ACCEPT).toBe('.obj,.off,.ply,.stl,.gltf,.glb');
+    expect(meshFormatList()).toBe('.obj, .off, .ply, .stl, .gltf or .glb');
+    for (const f of MESH_FORMATS) expect(meshFormatOf(`m.${f.toUpperCase()}`)).toBe(f);
+    const e = await failure(Promise.resolve().then(() => meshFormatOf('model.3ds')));
+    expect(e.message).toBe(`model.3ds: unsupported mesh format '.3ds' (expected ${meshFormatList()})`);
+    // Each listed format has a reader: the same triangle in every text format parses to the same arrays.
+    const texts: Partial<Record<MeshFormat, string>> = {
+      obj: 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n',
+      off: 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n',
+      ply: 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n',
+      stl: 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n',
+    };
+    for (const [format, text] of Object.entries(texts)) {
+      const mesh = await parseMesh(text, `t.${format}`);
+      expect(mesh.format).toBe(format);
+      expect(Array.from(mesh.positions)).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+      expect(Array.from(mesh.triangles)).toEqual([0, 1, 2]);
     }
   });
 

@@ -49,16 +49,13 @@ class SurfaceMeshHandle {
     return kOk;
   }
 
-  // Report: 0 file vertices, 1 file faces, 2 used vertices, 3 welded, 4 unreferenced, 5 degenerate faces,
-  // 6 non-manifold edges, 7 non-manifold vertices, 8 flipped faces, 9 non-orientable cuts,
-  // 10 boundary edges, 11 boundary loops, 12 components.
-  int report(int which) const {
-    if (!mesh_) return 0;
-    const MeshReport& r = mesh_->report;
-    const int values[] = {r.file_vertices, r.file_faces, r.used_vertices, r.welded_vertices, r.unreferenced_vertices,
-                          r.degenerate_faces, r.non_manifold_edges, r.non_manifold_vertices, r.flipped_faces,
-                          r.non_orientable_cuts, r.boundary_edges, r.boundary_loops, r.components};
-    return which >= 0 && which < int(std::size(values)) ? values[which] : 0;
+  // The mesh report as {name: count} under the names of surface::report_fields (src/surface/mesh.ts
+  // reads them by name); an empty object before a successful build().
+  val reportFields() const {
+    val out = val::object();
+    if (mesh_)
+      for (const auto& [name, count] : report_fields(mesh_->report)) out.set(name, count);
+    return out;
   }
   double bytes() const { return mesh_ ? double(mesh_bytes(*mesh_) + solver_->bytes()) : 0; }
   double scale() const { return mesh_ ? mesh_->scale : 0; }
@@ -311,7 +308,7 @@ EMSCRIPTEN_BINDINGS(splinekit_surface) {
       .function("positionsIn", &SurfaceMeshHandle::positionsIn)
       .function("trianglesIn", &SurfaceMeshHandle::trianglesIn)
       .function("build", &SurfaceMeshHandle::build)
-      .function("report", &SurfaceMeshHandle::report)
+      .function("reportFields", &SurfaceMeshHandle::reportFields)
       .function("bytes", &SurfaceMeshHandle::bytes)
       .function("scale", &SurfaceMeshHandle::scale)
       .function("resizePoints", &SurfaceMeshHandle::resizePoints)

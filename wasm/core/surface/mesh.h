@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace splinekit::surface {
@@ -48,6 +49,25 @@ struct MeshReport {
   int boundary_loops = 0;
   int components = 0;
 };
+
+// The report's counts by name, in one fixed order: the one list of them that crosses to TypeScript
+// (the bindings hand it on as an object, src/surface/mesh.ts reads the counts by these names, so
+// no other layer restates their order).
+inline std::array<std::pair<const char*, int>, 13> report_fields(const MeshReport& r) {
+  return {{{"file_vertices", r.file_vertices},
+           {"file_faces", r.file_faces},
+           {"used_vertices", r.used_vertices},
+           {"welded_vertices", r.welded_vertices},
+           {"unreferenced_vertices", r.unreferenced_vertices},
+           {"degenerate_faces", r.degenerate_faces},
+           {"non_manifold_edges", r.non_manifold_edges},
+           {"non_manifold_vertices", r.non_manifold_vertices},
+           {"flipped_faces", r.flipped_faces},
+           {"non_orientable_cuts", r.non_orientable_cuts},
+           {"boundary_edges", r.boundary_edges},
+           {"boundary_loops", r.boundary_loops},
+           {"components", r.components}}};
+}
 
 struct TriMesh {
   std::vector<Vec3> positions;                 // #V mesh-space vertices
