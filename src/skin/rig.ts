@@ -21,7 +21,9 @@ export { IDENTITY_MATRIX, type AffineMatrix } from '../core/affine.js';
 
 /** A point handle in document space. */
 export interface SkinHandle {
+  /** x in document space. */
   x: number;
+  /** y in document space. */
   y: number;
 }
 
@@ -35,8 +37,11 @@ const METHOD_CODE: Record<SkinMethod, number> = { fit: 0, naive: 1, interpolated
  * come from `SkinWeights` (skin/weights.ts).
  */
 export interface WeightSource {
+  /** Number of handles: columns of `out`. */
   readonly handleCount: number;
+  /** Fills `out` (#points × #handles, row-major) with the weights at `points` (x,y pairs). */
   weightsAt(points: Float64Array, out: Float64Array): void;
+  /** Fills `out` (#points × #handles × 2) with ∇w at `points`; only the Jacobian baseline calls it. */
   gradientsAt?(points: Float64Array, out: Float64Array): void;
 }
 
@@ -45,6 +50,7 @@ export interface WeightSource {
  * worker that computes slow weights (harmonic, BBW) from plain arrays.
  */
 export interface PrecomputedWeights {
+  /** Number of handles: columns of every array. */
   readonly handleCount: number;
   /** At the curve samples: #samples × #handles, row-major. */
   readonly samples: Float64Array;
@@ -56,11 +62,15 @@ export interface PrecomputedWeights {
 
 /** Where a rig needs its weights: curve samples (midpoint rule) and control points, x,y pairs. */
 export interface WeightQueries {
+  /** The curve samples, x,y pairs: `samples` per curve, curves in spline order. */
   samples: Float64Array;
+  /** The control points of every spline, x,y pairs, in spline order. */
   points: Float64Array;
 }
 
+/** What SkinRig.create needs: the handles, and optionally weights, quadrature and continuity. */
 export interface SkinRigOptions {
+  /** The handles, in the order of the transforms given to pose(). At least one. */
   handles: readonly SkinHandle[];
   /** 'shepard' (default), a weight source, or weights precomputed at weightQueries(). */
   weights?: 'shepard' | WeightSource | PrecomputedWeights;
@@ -74,6 +84,7 @@ export interface SkinRigOptions {
   continuity?: (ContinuityKind | undefined)[][];
 }
 
+/** How far a deformation is from the target (each curve's rest shape under the blended transforms). */
 export interface SkinError {
   /** Σ_j ℓ_j ∫|B_j − s|² dt: the integrated squared distance to the target, length-weighted. */
   total: number;
@@ -84,8 +95,15 @@ export interface SkinError {
 }
 
 
+/**
+ * A skinning rig for an SVG document (Liu, Jacobson & Gingold 2014): create() precomputes
+ * weights and one factorization; pose() fits every cubic curve to the blended handle transforms,
+ * keeping the continuity tags, in one matrix–vector product. Holds wasm memory: dispose() it.
+ */
 export class SkinRig {
+  /** Number of handles (transforms per pose). */
   readonly handleCount: number;
+  /** Number of cubic curves (segments) over all splines. */
   readonly curveCount: number;
   /** Milliseconds spent in create() (weights and the precompute). */
   readonly precomputeMs: number;
@@ -209,7 +227,12 @@ export class SkinRig {
    * Flexible G1 / angle (§4): starting from the rigid fit of the current pose, alternates fixed
    * ratios and fixed directions until the energy stops dropping. Updates points().
    */
-  relax(): { iterations: number; energies: number[] } {
+  relax(): {
+    /** Gauss–Newton iterations taken. */
+    iterations: number;
+    /** The energy after each iteration. */
+    energies: number[];
+  } {
     const h = this.live();
     const iterations = h.relax();
     return { iterations, energies: Array.from(h.relaxEnergies()) };
@@ -266,6 +289,7 @@ export class SkinRig {
     return this.posedDocument(points).toSVG();
   }
 
+  /** Frees the rig's wasm memory; the rig cannot be used afterwards (a second call does nothing). */
   dispose(): void {
     this.handle?.delete();
     this.handle = undefined;

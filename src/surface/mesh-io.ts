@@ -32,6 +32,7 @@ import { parseStl } from './io/stl.js';
 
 export { MESH_FORMATS, type MeshArrays, type MeshFormat } from './io/common.js';
 
+/** Options of parseMesh. */
 export interface MeshParseOptions {
   /** Inputs larger than this many bytes are refused with SplinekitError('file-too-large'). Default 512 MiB. */
   maxBytes?: number;
