@@ -17,7 +17,7 @@
 
 using namespace emscripten;
 
-namespace splinekit {
+namespace splinekit::skin {
 namespace {
 
 class SkinWeightsHandle {
@@ -47,7 +47,7 @@ class SkinWeightsHandle {
     options.bound_tolerance = bound_tolerance;
     options.multiplier_tolerance = multiplier_tolerance;
     options.partition_of_unity = partition_of_unity;
-    options.mass = mass == 0 ? MassType::Barycentric : MassType::Voronoi;
+    options.mass = mass == 0 ? MassType::kBarycentric : MassType::kVoronoi;
     std::vector<double> W(weight_count());
     return finish(bbw_weights(mesh(), handles_.data(), handle_count(), options, W.data()), W);
   }
@@ -126,10 +126,10 @@ class SkinWeightsHandle {
 };
 
 }  // namespace
-}  // namespace splinekit
+}  // namespace splinekit::skin
 
 EMSCRIPTEN_BINDINGS(splinekit_skin_weights) {
-  using namespace splinekit;
+  using namespace splinekit::skin;
   class_<SkinWeightsHandle>("SkinWeightsHandle")
       .constructor<>()
       .function("resize", &SkinWeightsHandle::resize)

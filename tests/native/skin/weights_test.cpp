@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-using namespace splinekit;
+using namespace splinekit::skin;
 
 namespace {
 
@@ -86,7 +86,7 @@ Eigen::VectorXd column(const std::vector<double>& W, int h, int j) {
 
 // Unconstrained biharmonic weights of handle j (the BBW objective without bounds), by a direct solve.
 Eigen::VectorXd unconstrained_biharmonic(const Mesh& m, const std::vector<int32_t>& handles, int j) {
-  const Eigen::SparseMatrix<double> Q = bilaplacian(m, MassType::Voronoi);
+  const Eigen::SparseMatrix<double> Q = bilaplacian(m, MassType::kVoronoi);
   std::vector<int> slot(m.nv(), 0), free;
   for (int32_t hv : handles) slot[hv] = -1;
   for (int v = 0; v < m.nv(); ++v)
@@ -144,7 +144,7 @@ TEST_P(WeightsOnMeshes, LaplacianIsSymmetricWithZeroRowSumsAndKillsLinearFunctio
 }
 
 TEST_P(WeightsOnMeshes, MassMatricesArePositiveAndSumToTheArea) {
-  for (MassType type : {MassType::Barycentric, MassType::Voronoi}) {
+  for (MassType type : {MassType::kBarycentric, MassType::kVoronoi}) {
     Eigen::SparseMatrix<double> M;
     mass_matrix(mesh.view(), type, M);
     EXPECT_EQ(M.nonZeros(), mesh.nv());
@@ -158,7 +158,7 @@ TEST(Weights, VoronoiMassOfAnObtuseTriangleSplitsHalfAndQuarters) {
   const double V[] = {0, 0, 4, 0, 2, 0.5};
   const int32_t F[] = {0, 1, 2};
   Eigen::SparseMatrix<double> M;
-  mass_matrix({V, 3, F, 1}, MassType::Voronoi, M);
+  mass_matrix({V, 3, F, 1}, MassType::kVoronoi, M);
   EXPECT_NEAR(M.coeff(0, 0), 0.25, 1e-15);
   EXPECT_NEAR(M.coeff(1, 1), 0.25, 1e-15);
   EXPECT_NEAR(M.coeff(2, 2), 0.5, 1e-15);

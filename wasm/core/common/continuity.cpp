@@ -31,7 +31,7 @@ JunctionInfo classify_junction(const double* in_far, const double* h_in, const d
   if (!b_ok) db = at(out_far) - P;
 
   JunctionInfo info;
-  info.kind = Continuity::C0;
+  info.kind = Continuity::kC0;
   info.ratio = (a_ok && b_ok) ? b.norm() / a.norm() : 0.0;
   const double la = da.norm(), lb = db.norm();
   if (la <= eps || lb <= eps) {
@@ -47,7 +47,7 @@ JunctionInfo classify_junction(const double* in_far, const double* h_in, const d
   if (!collinear) return info;
   const double length_gap = std::abs(lb - la);
   const bool equal = length_gap <= eps || std::abs(info.ratio - 1.0) <= options.ratio_tolerance;
-  info.kind = equal ? Continuity::C1 : Continuity::G1;
+  info.kind = equal ? Continuity::kC1 : Continuity::kG1;
   return info;
 }
 

@@ -7,7 +7,7 @@
 #include "common/bezier.h"
 #include "shepard.h"
 
-namespace splinekit {
+namespace splinekit::skin {
 
 namespace {
 
@@ -75,7 +75,7 @@ std::string SkinRig::setup(const SplineSet& rest, const std::vector<Continuity>&
     const int base = rest_.start[s], count = rest_.count[s];
     for (int q = 0; q < spline_junction_count(count, closed); ++q, ++j) {
       const Continuity kind = kinds[j];
-      if (kind != Continuity::C1 && kind != Continuity::G1 && kind != Continuity::Angle) continue;
+      if (kind != Continuity::kC1 && kind != Continuity::kG1 && kind != Continuity::kAngle) continue;
       const int anchor = closed ? 3 * q : 3 * (q + 1);
       Junction c{base + (anchor + count - 1) % count, base + anchor, base + (anchor + 1) % count, kind, 1.0, 0.0};
       const Eigen::Vector2d a = point(rest_.points.data(), c.anchor) - point(rest_.points.data(), c.in);
@@ -174,7 +174,7 @@ std::string SkinRig::precompute() {
   hessian_.setFromTriplets(triplets.begin(), triplets.end());
 
   // Reduced system SᵀHS y = Sᵀ rhs, X = S y: one factorization for every pose.
-  const Eigen::SparseMatrix<double> sub = substitution(Form::Ratio, nullptr);
+  const Eigen::SparseMatrix<double> sub = substitution(Form::kRatio, nullptr);
   const Eigen::SparseMatrix<double> reduced = sub.transpose() * hessian_ * sub;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(reduced);
   if (solver.info() != Eigen::Success) return "the skinning system could not be factorized (degenerate curves?)";
@@ -192,16 +192,16 @@ Eigen::SparseMatrix<double> SkinRig::substitution(Form form, const double* curre
   std::vector<int> role(N, -1);  // -1 free; else index into junctions_ (H_out, or H_in when flexible)
   for (size_t j = 0; j < junctions_.size(); ++j) {
     role[junctions_[j].out] = int(j);
-    if (form == Form::Direction && junctions_[j].kind != Continuity::C1) role[junctions_[j].in] = int(j);
+    if (form == Form::kDirection && junctions_[j].kind != Continuity::kC1) role[junctions_[j].in] = int(j);
   }
   std::vector<int> var(N, -1);
   int vars = 0;
   for (int k = 0; k < N; ++k)
     if (role[k] < 0) var[k] = vars, vars += 2;
   std::vector<int> scalar(junctions_.size(), -1);
-  if (form == Form::Direction)
+  if (form == Form::kDirection)
     for (size_t j = 0; j < junctions_.size(); ++j)
-      if (junctions_[j].kind != Continuity::C1) scalar[j] = vars, vars += 2;
+      if (junctions_[j].kind != Continuity::kC1) scalar[j] = vars, vars += 2;
 
   std::vector<Eigen::Triplet<double>> t;
   t.reserve(2 * N + 8 * junctions_.size());
@@ -226,7 +226,7 @@ Eigen::SparseMatrix<double> SkinRig::substitution(Form form, const double* curre
     }
     // H_out = P + ρR(P − H_in): rest ρ, or the current one for a flexible junction mid-relax.
     double rho = c.ratio;
-    if (current && c.kind != Continuity::C1) {
+    if (current && c.kind != Continuity::kC1) {
       const double la = (point(current, c.anchor) - point(current, c.in)).norm();
       const double lb = (point(current, c.out) - point(current, c.anchor)).norm();
       if (la > 1e-300) rho = lb / la;
@@ -259,7 +259,7 @@ void SkinRig::build_rhs(const double* transforms, Eigen::VectorXd& rhs) const {
 }
 
 const double* SkinRig::baseline(SkinMethod method, const double* T) {
-  if (method == SkinMethod::Fit) return update(T);
+  if (method == SkinMethod::kFit) return update(T);
   const int N = rest_.point_count(), H = handles_;
   const double* P = rest_.points.data();
   // s at p with the weights of point k: Σ_i w_i T_i [p; 1].
@@ -273,7 +273,7 @@ const double* SkinRig::baseline(SkinMethod method, const double* T) {
     }
   };
   for (int k = 0; k < N; ++k) blend(k, P[2 * k], P[2 * k + 1], &baseline_[2 * k]);
-  if (method == SkinMethod::NaiveAll) return baseline_.data();
+  if (method == SkinMethod::kNaiveAll) return baseline_.data();
   for (int s = 0; s < rest_.spline_count(); ++s) {
     const int base = rest_.start[s], count = rest_.count[s];
     for (int l = 0; l < count; ++l) {
@@ -281,7 +281,7 @@ const double* SkinRig::baseline(SkinMethod method, const double* T) {
       const int k = base + l;
       const int anchor = base + (l % 3 == 1 ? l - 1 : (l + 1) % count);
       const double ax = P[2 * anchor], ay = P[2 * anchor + 1];
-      if (method == SkinMethod::NaiveInterpolated) {
+      if (method == SkinMethod::kNaiveInterpolated) {
         blend(anchor, P[2 * k], P[2 * k + 1], &baseline_[2 * k]);
         continue;
       }
@@ -348,7 +348,7 @@ RelaxReport SkinRig::relax(const double* T) {
   RelaxReport report;
   update(T);
   int flexible = 0;
-  for (const Junction& c : junctions_) flexible += c.kind != Continuity::C1;
+  for (const Junction& c : junctions_) flexible += c.kind != Continuity::kC1;
   // The energy as a quadratic form, E(X) = XᵀHX − 2 X·rhs + c, c = Σ ℓ_j ∫|s|²: cheap per step.
   Eigen::VectorXd rhs(points_.size());
   build_rhs(T, rhs);
@@ -364,7 +364,7 @@ RelaxReport SkinRig::relax(const double* T) {
   int streak = 0;
   for (int it = 0; it < options_.relax_max_iterations; ++it) {
     const int f = it % 2;
-    const Form form = f == 0 ? Form::Direction : Form::Ratio;
+    const Form form = f == 0 ? Form::kDirection : Form::kRatio;
     const Eigen::SparseMatrix<double> sub = substitution(form, points_.data());
     Eigen::SparseMatrix<double> A = sub.transpose() * hessian_ * sub;
     A.makeCompressed();
@@ -381,7 +381,7 @@ RelaxReport SkinRig::relax(const double* T) {
     if (solvers[f].info() != Eigen::Success || !y.allFinite()) break;
     // α, β > 0 (clamped, as in the paper): a handle may not flip through its anchor. They are the
     // last 2·flexible unknowns of the direction form.
-    if (form == Form::Direction)
+    if (form == Form::kDirection)
       for (Eigen::Index k = y.size() - 2 * flexible; k < y.size(); ++k) y[k] = std::max(y[k], eps);
     Eigen::Map<Eigen::VectorXd>(trial.data(), Eigen::Index(trial.size())) = sub * y;
     const double e = quadratic_energy(trial.data(), rhs) + c;
@@ -405,4 +405,4 @@ double SkinRig::quadratic_energy(const double* X, const Eigen::VectorXd& rhs) co
   return x.dot(hessian_ * x) - 2 * x.dot(rhs);
 }
 
-}  // namespace splinekit
+}  // namespace splinekit::skin

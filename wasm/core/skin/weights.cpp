@@ -8,7 +8,7 @@
 #include <numeric>
 #include <utility>
 
-namespace splinekit {
+namespace splinekit::skin {
 
 using SpMat = Eigen::SparseMatrix<double>;
 
@@ -408,7 +408,8 @@ class SubsetSolver {
   Eigen::VectorXd b_;
 };
 
-enum Bound : char { kFree = 0, kLower = 1, kUpper = 2 };
+// Which bound holds a variable (one char per variable).
+enum class Bound : char { kFree = 0, kLower = 1, kUpper = 2 };
 
 // Rings (in the graph of Q) of the active set released together with a variable whose
 // multiplier says "release" (see solve_box_qp).
@@ -446,7 +447,8 @@ BoxQpReport solve_box_qp(const SpMat& Q, const Eigen::VectorXd& c, const Eigen::
   BoxQpReport report;
   const int n = int(c.size());
   const double tol_x = options.bound_tolerance;
-  std::vector<char> bound(size_t(n), kFree), next(size_t(n), kFree), keep(size_t(n), 1);
+  std::vector<Bound> bound(size_t(n), Bound::kFree), next(size_t(n), Bound::kFree);
+  std::vector<char> keep(size_t(n), 1);
   std::vector<char> spread_freed(size_t(n), 0), released(size_t(n), 0), pinned(size_t(n), 0);
   std::vector<int> ring, next_ring;
   std::vector<uint64_t> seen;  // hashes of the active sets so far
@@ -462,17 +464,17 @@ BoxQpReport solve_box_qp(const SpMat& Q, const Eigen::VectorXd& c, const Eigen::
     // The plain PDAS update.
     ring.clear();
     for (int i = 0; i < n; ++i) {
-      char b = bound[i];
-      if (b == kFree) {
-        b = x[i] < -tol_x ? kLower : x[i] > 1 + tol_x ? kUpper : kFree;
-      } else if ((b == kLower && g[i] < -multiplier_tolerance[i]) || (b == kUpper && g[i] > multiplier_tolerance[i])) {
+      Bound b = bound[i];
+      if (b == Bound::kFree) {
+        b = x[i] < -tol_x ? Bound::kLower : x[i] > 1 + tol_x ? Bound::kUpper : Bound::kFree;
+      } else if ((b == Bound::kLower && g[i] < -multiplier_tolerance[i]) || (b == Bound::kUpper && g[i] > multiplier_tolerance[i])) {
         if (!cycling || !released[i])
-          b = kFree;
+          b = Bound::kFree;
         else if (!pinned[i])
           pinned[i] = 1, ++report.pinned;
       }
       next[i] = b;
-      if (bound[i] != kFree && b == kFree) ring.push_back(i);
+      if (bound[i] != Bound::kFree && b == Bound::kFree) ring.push_back(i);
     }
     // Spread the releases over neighbours held at the same bound.
     std::fill(spread_freed.begin(), spread_freed.end(), 0);
@@ -481,8 +483,8 @@ BoxQpReport solve_box_qp(const SpMat& Q, const Eigen::VectorXd& c, const Eigen::
       for (int i : ring)
         for (SpMat::InnerIterator it(Q, i); it; ++it) {
           const int j = int(it.row());
-          if (next[j] != kFree && next[j] == bound[j] && bound[j] == bound[i]) {
-            next[j] = kFree;
+          if (next[j] != Bound::kFree && next[j] == bound[j] && bound[j] == bound[i]) {
+            next[j] = Bound::kFree;
             spread_freed[j] = 1;
             next_ring.push_back(j);
           }
@@ -493,7 +495,7 @@ BoxQpReport solve_box_qp(const SpMat& Q, const Eigen::VectorXd& c, const Eigen::
       report.converged = true;
       break;
     }
-    for (int i = 0; i < n; ++i) released[i] |= bound[i] != kFree && next[i] == kFree;
+    for (int i = 0; i < n; ++i) released[i] |= bound[i] != Bound::kFree && next[i] == Bound::kFree;
     bound.swap(next);
     // Each iteration is a function of (active set, spread, spread-freed variables), so a repeated
     // state (FNV-1a hash) is a cycle.
@@ -505,8 +507,8 @@ BoxQpReport solve_box_qp(const SpMat& Q, const Eigen::VectorXd& c, const Eigen::
     seen.push_back(hash);
     if (report.solves >= options.max_iterations) break;
     for (int i = 0; i < n; ++i) {
-      keep[i] = bound[i] == kFree;
-      fixed[i] = bound[i] == kUpper ? 1.0 : 0.0;
+      keep[i] = bound[i] == Bound::kFree;
+      fixed[i] = bound[i] == Bound::kUpper ? 1.0 : 0.0;
     }
     if (!solver.factorize(keep)) {
       report.error = "internal: the bilaplacian of the free vertices is not numerically positive definite";
@@ -679,7 +681,7 @@ void mass_matrix(const MeshView2& m, MassType type, SpMat& M) {
   for (int t = 0; t < m.triangle_count; ++t) {
     const int32_t* f = triangle(m, t);
     const double A = 0.5 * std::abs(cross2(vertex(m, f[0]), vertex(m, f[1]), vertex(m, f[2])));
-    if (type == MassType::Barycentric) {
+    if (type == MassType::kBarycentric) {
       for (int k = 0; k < 3; ++k) area[f[k]] += A / 3;
       continue;
     }
@@ -927,4 +929,4 @@ void locate_gradients(const TriangleGrid& grid, const MeshView2& m, const double
   }
 }
 
-}  // namespace splinekit
+}  // namespace splinekit::skin

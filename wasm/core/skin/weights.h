@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-namespace splinekit {
+namespace splinekit::skin {
 
 // A 2D triangle mesh in caller-owned flat arrays (no ownership, no copy).
 struct MeshView2 {
@@ -54,9 +54,10 @@ std::string validate_weights_input(const MeshView2& mesh, const int32_t* handles
 // L_ij = ½ (cot α_ij + cot β_ij) over the angles opposite edge ij, L_ii = −Σ_j L_ij.
 void cotangent_laplacian(const MeshView2& mesh, Eigen::SparseMatrix<double>& L);
 
+// Which lumped mass matrix. The numbers cross to TS (src/skin/weights.ts passes 0 or 1).
 enum class MassType : int {
-  Barycentric = 0, // a third of each incident triangle's area
-  Voronoi = 1,     // mixed Voronoi areas (Meyer et al. 2003): circumcentric cells, obtuse triangles split ½, ¼, ¼
+  kBarycentric = 0,  // a third of each incident triangle's area
+  kVoronoi = 1,      // mixed Voronoi areas (Meyer et al. 2003): circumcentric cells, obtuse triangles split ½, ¼, ¼
 };
 
 // Lumped (diagonal) mass matrix M (#V by #V); its diagonal sums to the mesh area for both types.
@@ -97,7 +98,7 @@ struct BbwOptions {
                                       // weights within ~1e-4 of it on the test and benchmark meshes
                                       // (500 to 20k triangles)
   bool partition_of_unity = true;     // normalize so Σ_i w_i = 1 at every vertex (off: the raw QP optimum)
-  MassType mass = MassType::Voronoi;
+  MassType mass = MassType::kVoronoi;
 };
 
 // Bounded Biharmonic Weights: per handle i, minimize ½ w_iᵀ Q w_i with Q = L M⁻¹ L subject to
@@ -156,4 +157,4 @@ void locate_and_interpolate(const TriangleGrid& grid, const MeshView2& mesh, con
 void locate_gradients(const TriangleGrid& grid, const MeshView2& mesh, const double* G, int handle_count,
                       const double* points, int point_count, double* out);
 
-}  // namespace splinekit
+}  // namespace splinekit::skin
