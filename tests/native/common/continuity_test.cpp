@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "common/geometry.h"
 #include "common/spline_set.h"
 
 using namespace splinekit;
@@ -36,14 +37,14 @@ TEST(Continuity, G1WithItsRatio) {
 TEST(Continuity, CornerIsC0WithSignedAngle) {
   JunctionInfo j = classify(1, 0, 0, 1);  // turning left by 90 degrees
   EXPECT_EQ(j.kind, Continuity::kC0);
-  EXPECT_NEAR(j.angle, M_PI / 2, 1e-14);
+  EXPECT_NEAR(j.angle, kPi / 2, 1e-14);
   j = classify(1, 0, 0, -2);
   EXPECT_EQ(j.kind, Continuity::kC0);
-  EXPECT_NEAR(j.angle, -M_PI / 2, 1e-14);
+  EXPECT_NEAR(j.angle, -kPi / 2, 1e-14);
   // Folding back (a cusp) is a corner, not G1, even though the handles are collinear.
   j = classify(1, 0, -1, 0);
   EXPECT_EQ(j.kind, Continuity::kC0);
-  EXPECT_NEAR(std::abs(j.angle), M_PI, 1e-14);
+  EXPECT_NEAR(std::abs(j.angle), kPi, 1e-14);
 }
 
 TEST(Continuity, TolerancesDecideNearlySmoothJunctions) {
@@ -79,7 +80,7 @@ TEST(Continuity, JunctionOrderOfOpenAndClosedSplines) {
   classify_spline(open, 10, false, {}, out);
   EXPECT_EQ(out[0].kind, Continuity::kC1);
   EXPECT_EQ(out[1].kind, Continuity::kC0);
-  EXPECT_NEAR(out[1].angle, M_PI / 2, 1e-14);
+  EXPECT_NEAR(out[1].angle, kPi / 2, 1e-14);
   // Closed square of 4 line-cubics: 4 corners at anchors 0, 3, 6, 9, all turning +90 degrees.
   double sq[24];
   const double corners[5][2] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}, {0, 0}};
@@ -92,6 +93,6 @@ TEST(Continuity, JunctionOrderOfOpenAndClosedSplines) {
   classify_spline(sq, 12, true, {}, out);
   for (int j = 0; j < 4; ++j) {
     EXPECT_EQ(out[j].kind, Continuity::kC0);
-    EXPECT_NEAR(out[j].angle, M_PI / 2, 1e-14) << j;
+    EXPECT_NEAR(out[j].angle, kPi / 2, 1e-14) << j;
   }
 }

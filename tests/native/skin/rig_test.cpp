@@ -19,14 +19,14 @@ SplineSet artwork() {
   SplineSet s;
   const int n = 6;
   for (int k = 0; k < n; ++k) {
-    const double a = 2 * M_PI * k / n, r = 10 + 2 * std::cos(3 * a);
+    const double a = 2 * kPi * k / n, r = 10 + 2 * std::cos(3 * a);
     const Vec2 p(20 + r * std::cos(a), 15 + r * std::sin(a)), t(-std::sin(a), std::cos(a));
     const double in = 2.0, out = k % 3 == 0 ? 2.0 : 3.5;  // C1, then G1 with ratio 1.75
     Vec2 hin = p - in * t, hout = p + out * t;
     if (k == 4) hout = p + 3.0 * Vec2(std::cos(a + 0.9), std::sin(a + 0.9));  // a corner
     // Points of segment k-1 end with hin, then anchor p, then hout: store as anchor, hout, (next hin).
     s.points.insert(s.points.end(), {p.x(), p.y(), hout.x(), hout.y()});
-    const double a2 = 2 * M_PI * (k + 1) / n, r2 = 10 + 2 * std::cos(3 * a2);
+    const double a2 = 2 * kPi * (k + 1) / n, r2 = 10 + 2 * std::cos(3 * a2);
     const Vec2 p2(20 + r2 * std::cos(a2), 15 + r2 * std::sin(a2)), t2(-std::sin(a2), std::cos(a2));
     const Vec2 hin2 = p2 - 2.0 * t2;
     s.points.insert(s.points.end(), {hin2.x(), hin2.y()});
@@ -82,7 +82,7 @@ void identity(double* T, int h) {
 
 // Random pose: each handle rotates by up to ±60° about itself and moves a little.
 std::vector<double> random_pose(std::mt19937& rng) {
-  std::uniform_real_distribution<double> angle(-M_PI / 3, M_PI / 3), shift(-3, 3), scale(0.8, 1.25);
+  std::uniform_real_distribution<double> angle(-kPi / 3, kPi / 3), shift(-3, 3), scale(0.8, 1.25);
   std::vector<double> T(24);
   for (int i = 0; i < 4; ++i) {
     const double a = angle(rng), s = scale(rng), hx = kHandles[2 * i], hy = kHandles[2 * i + 1];

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/bezier.h"
+#include "common/geometry.h"
 #include "shepard.h"
 
 namespace splinekit::skin {
@@ -16,8 +17,6 @@ Eigen::Matrix2d rotation(double angle) {
   r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
   return r;
 }
-
-Eigen::Vector2d point(const double* xy, int k) { return {xy[2 * k], xy[2 * k + 1]}; }
 
 bool finite(const std::vector<double>& v) {
   for (double x : v)
@@ -78,11 +77,11 @@ std::string SkinRig::setup(const SplineSet& rest, const std::vector<Continuity>&
       if (kind != Continuity::kC1 && kind != Continuity::kG1 && kind != Continuity::kAngle) continue;
       const int anchor = closed ? 3 * q : 3 * (q + 1);
       Junction c{base + (anchor + count - 1) % count, base + anchor, base + (anchor + 1) % count, kind, 1.0, 0.0};
-      const Eigen::Vector2d a = point(rest_.points.data(), c.anchor) - point(rest_.points.data(), c.in);
-      const Eigen::Vector2d b = point(rest_.points.data(), c.out) - point(rest_.points.data(), c.anchor);
+      const Vec2 a = vec2_at(rest_.points.data(), c.anchor) - vec2_at(rest_.points.data(), c.in);
+      const Vec2 b = vec2_at(rest_.points.data(), c.out) - vec2_at(rest_.points.data(), c.anchor);
       if (a.norm() <= 1e-12 * (1 + total_length_) || b.norm() <= 1e-12 * (1 + total_length_)) continue;  // no tangent to keep
       c.ratio = b.norm() / a.norm();
-      c.angle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+      c.angle = std::atan2(cross(a, b), a.dot(b));
       junctions_.push_back(c);
     }
   }
@@ -93,8 +92,8 @@ std::string SkinRig::setup(const SplineSet& rest, const std::vector<Continuity>&
   sample_points_.assign(2 * curves_.size() * size_t(S), 0.0);
   for (size_t c = 0; c < curves_.size(); ++c)
     for (int s = 0; s < S; ++s) {
-      Eigen::Vector2d p = Eigen::Vector2d::Zero();
-      for (int a = 0; a < 4; ++a) p += bernstein_(a, s) * point(rest_.points.data(), curves_[c][a]);
+      Vec2 p = Vec2::Zero();
+      for (int a = 0; a < 4; ++a) p += bernstein_(a, s) * vec2_at(rest_.points.data(), curves_[c][a]);
       sample_points_[2 * (c * S + s)] = p.x();
       sample_points_[2 * (c * S + s) + 1] = p.y();
     }
@@ -212,10 +211,10 @@ Eigen::SparseMatrix<double> SkinRig::substitution(Form form, const double* curre
     const Eigen::Matrix2d R = rotation(c.angle);
     if (scalar[j] >= 0) {
       // H_in = P − α u, H_out = P + β R u, u the current unit direction of a = P − H_in.
-      Eigen::Vector2d u = point(current, c.anchor) - point(current, c.in);
-      if (u.norm() <= 1e-300) u = point(rest_.points.data(), c.anchor) - point(rest_.points.data(), c.in);
+      Vec2 u = vec2_at(current, c.anchor) - vec2_at(current, c.in);
+      if (u.norm() <= 1e-300) u = vec2_at(rest_.points.data(), c.anchor) - vec2_at(rest_.points.data(), c.in);
       u.normalize();
-      const Eigen::Vector2d v = R * u;
+      const Vec2 v = R * u;
       for (int r = 0; r < 2; ++r) {
         t.emplace_back(2 * c.in + r, var[c.anchor] + r, 1.0);
         t.emplace_back(2 * c.in + r, scalar[j], -u[r]);
@@ -227,8 +226,8 @@ Eigen::SparseMatrix<double> SkinRig::substitution(Form form, const double* curre
     // H_out = P + ρR(P − H_in): rest ρ, or the current one for a flexible junction mid-relax.
     double rho = c.ratio;
     if (current && c.kind != Continuity::kC1) {
-      const double la = (point(current, c.anchor) - point(current, c.in)).norm();
-      const double lb = (point(current, c.out) - point(current, c.anchor)).norm();
+      const double la = (vec2_at(current, c.anchor) - vec2_at(current, c.in)).norm();
+      const double lb = (vec2_at(current, c.out) - vec2_at(current, c.anchor)).norm();
       if (la > 1e-300) rho = lb / la;
     }
     const Eigen::Matrix2d M = rho * R;
@@ -334,7 +333,7 @@ double SkinRig::energy(const double* X, const double* T) const { return error(X,
 double SkinRig::constraint_residual(const double* X) const {
   double worst = 0;
   for (const Junction& c : junctions_) {
-    const Eigen::Vector2d a = point(X, c.anchor) - point(X, c.in), b = point(X, c.out) - point(X, c.anchor);
+    const Vec2 a = vec2_at(X, c.anchor) - vec2_at(X, c.in), b = vec2_at(X, c.out) - vec2_at(X, c.anchor);
     worst = std::max(worst, (b - c.ratio * rotation(c.angle) * a).norm());
   }
   return worst;
