@@ -1,5 +1,6 @@
 // Embind glue for automatic skinning weights on a 2D mesh (wasm/core/skin/weights.h): harmonic
-// and bounded biharmonic weights, and their evaluation at arbitrary points. No algorithm here.
+// and bounded biharmonic weights, and their evaluation at arbitrary points (point_location.h).
+// No algorithm here.
 //
 // Flow (src/skin/weights.ts): resize(#V, #F, #H); fill vertices(), triangles(), handles();
 // harmonic() or bbw(...) — each validates, solves and builds the point locator; read weights().
@@ -12,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "skin/operators.h"
+#include "skin/point_location.h"
 #include "skin/weights.h"
 #include "spline_set_handle.h"
 
