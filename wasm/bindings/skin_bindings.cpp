@@ -15,19 +15,19 @@
 
 using namespace emscripten;
 
-namespace splinekit {
+namespace splinekit::skin {
 namespace {
 
 class SkinRigHandle {
  public:
   // Junction kinds (Continuity as int32) to fill before setup().
-  void resize_kinds(int n) { kinds_.assign(size_t(n < 0 ? 0 : n), int(Continuity::C0)); }
+  void resize_kinds(int n) { kinds_.assign(size_t(n < 0 ? 0 : n), int(Continuity::kC0)); }
   val kinds() { return view_of(kinds_); }
 
   int setup(const SplineSetHandle& splines, int handle_count, int samples) {
     std::vector<Continuity> kinds;
     for (int k : kinds_) {
-      if (k < 0 || k > int(Continuity::Angle)) return fail("junction kind " + std::to_string(k) + " is not a continuity tag");
+      if (k < 0 || k > int(Continuity::kAngle)) return fail("junction kind " + std::to_string(k) + " is not a continuity tag");
       kinds.push_back(Continuity(k));
     }
     SkinOptions options;
@@ -98,10 +98,10 @@ class SkinRigHandle {
 };
 
 }  // namespace
-}  // namespace splinekit
+}  // namespace splinekit::skin
 
 EMSCRIPTEN_BINDINGS(splinekit_skin) {
-  using namespace splinekit;
+  using namespace splinekit::skin;
   class_<SkinRigHandle>("SkinRigHandle")
       .constructor<>()
       .function("resizeKinds", &SkinRigHandle::resize_kinds)

@@ -1,5 +1,6 @@
 // Embind glue for automatic skinning weights on a 2D mesh (wasm/core/skin/weights.h): harmonic
-// and bounded biharmonic weights, and their evaluation at arbitrary points. No algorithm here.
+// and bounded biharmonic weights, and their evaluation at arbitrary points (point_location.h).
+// No algorithm here.
 //
 // Flow (src/skin/weights.ts): resize(#V, #F, #H); fill vertices(), triangles(), handles();
 // harmonic() or bbw(...) — each validates, solves and builds the point locator; read weights().
@@ -12,12 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "skin/operators.h"
+#include "skin/point_location.h"
 #include "skin/weights.h"
 #include "spline_set_handle.h"
 
 using namespace emscripten;
 
-namespace splinekit {
+namespace splinekit::skin {
 namespace {
 
 class SkinWeightsHandle {
@@ -47,7 +50,7 @@ class SkinWeightsHandle {
     options.bound_tolerance = bound_tolerance;
     options.multiplier_tolerance = multiplier_tolerance;
     options.partition_of_unity = partition_of_unity;
-    options.mass = mass == 0 ? MassType::Barycentric : MassType::Voronoi;
+    options.mass = mass == 0 ? MassType::kBarycentric : MassType::kVoronoi;
     std::vector<double> W(weight_count());
     return finish(bbw_weights(mesh(), handles_.data(), handle_count(), options, W.data()), W);
   }
@@ -126,10 +129,10 @@ class SkinWeightsHandle {
 };
 
 }  // namespace
-}  // namespace splinekit
+}  // namespace splinekit::skin
 
 EMSCRIPTEN_BINDINGS(splinekit_skin_weights) {
-  using namespace splinekit;
+  using namespace splinekit::skin;
   class_<SkinWeightsHandle>("SkinWeightsHandle")
       .constructor<>()
       .function("resize", &SkinWeightsHandle::resize)

@@ -121,8 +121,8 @@ TEST(Bezier, ArcLengthOfLineAndQuarterCircle) {
   // The classic quarter-circle cubic overshoots the circle by at most 2.7e-4: its length is
   // within a few 1e-4 of pi/2 (and above it, the cubic bulges outward).
   const double q = bezier_arc_length(kQuarter);
-  EXPECT_NEAR(q, M_PI / 2, 3e-4);
-  EXPECT_GT(q, M_PI / 2);
+  EXPECT_NEAR(q, kPi / 2, 3e-4);
+  EXPECT_GT(q, kPi / 2);
   // Independent: a 200k-piece polyline approaches from below to ~1e-10.
   double poly = 0;
   const int n = 200000;
@@ -188,10 +188,10 @@ TEST(Spline, SegmentsAndBoundsOfOpenAndClosed) {
   // Full circle from four quarter cubics (closed, 12 points).
   double pts[24];
   for (int q = 0; q < 4; ++q) {
-    const double ang = q * M_PI / 2;
+    const double ang = q * kPi / 2;
     const Vec2 a(std::cos(ang), std::sin(ang)), t(-std::sin(ang), std::cos(ang));
     const Vec2 h0 = a + kK * t;
-    const Vec2 nxt(std::cos(ang + M_PI / 2), std::sin(ang + M_PI / 2));
+    const Vec2 nxt(std::cos(ang + kPi / 2), std::sin(ang + kPi / 2));
     const Vec2 h1 = nxt + kK * a;  // incoming handle of the next anchor
     pts[6 * q] = a.x(), pts[6 * q + 1] = a.y();
     pts[6 * q + 2] = h0.x(), pts[6 * q + 3] = h0.y();

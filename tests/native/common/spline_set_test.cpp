@@ -68,8 +68,8 @@ TEST(SplineSet, BoundsSampleAndClassify) {
   EXPECT_NEAR(samples[23], 0, 1e-14);
   JunctionInfo j[3];
   spline_set_classify(s, {}, j);
-  for (int k = 0; k < 3; ++k) EXPECT_EQ(j[k].kind, Continuity::C0);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(j[k].kind, Continuity::kC0);
   // Triangle corners at (10,0): closing edge comes in going down (0,-1), leaves going +x: left turn.
-  EXPECT_NEAR(j[0].angle, M_PI / 2, 1e-14);
-  EXPECT_NEAR(j[1].angle, 3 * M_PI / 4, 1e-14);
+  EXPECT_NEAR(j[0].angle, kPi / 2, 1e-14);
+  EXPECT_NEAR(j[1].angle, 3 * kPi / 4, 1e-14);
 }

@@ -10,6 +10,7 @@
 #include "skin/shepard.h"
 
 using namespace splinekit;
+using namespace splinekit::skin;
 
 namespace {
 
@@ -18,14 +19,14 @@ SplineSet artwork() {
   SplineSet s;
   const int n = 6;
   for (int k = 0; k < n; ++k) {
-    const double a = 2 * M_PI * k / n, r = 10 + 2 * std::cos(3 * a);
+    const double a = 2 * kPi * k / n, r = 10 + 2 * std::cos(3 * a);
     const Vec2 p(20 + r * std::cos(a), 15 + r * std::sin(a)), t(-std::sin(a), std::cos(a));
     const double in = 2.0, out = k % 3 == 0 ? 2.0 : 3.5;  // C1, then G1 with ratio 1.75
     Vec2 hin = p - in * t, hout = p + out * t;
     if (k == 4) hout = p + 3.0 * Vec2(std::cos(a + 0.9), std::sin(a + 0.9));  // a corner
     // Points of segment k-1 end with hin, then anchor p, then hout: store as anchor, hout, (next hin).
     s.points.insert(s.points.end(), {p.x(), p.y(), hout.x(), hout.y()});
-    const double a2 = 2 * M_PI * (k + 1) / n, r2 = 10 + 2 * std::cos(3 * a2);
+    const double a2 = 2 * kPi * (k + 1) / n, r2 = 10 + 2 * std::cos(3 * a2);
     const Vec2 p2(20 + r2 * std::cos(a2), 15 + r2 * std::sin(a2)), t2(-std::sin(a2), std::cos(a2));
     const Vec2 hin2 = p2 - 2.0 * t2;
     s.points.insert(s.points.end(), {hin2.x(), hin2.y()});
@@ -81,7 +82,7 @@ void identity(double* T, int h) {
 
 // Random pose: each handle rotates by up to ±60° about itself and moves a little.
 std::vector<double> random_pose(std::mt19937& rng) {
-  std::uniform_real_distribution<double> angle(-M_PI / 3, M_PI / 3), shift(-3, 3), scale(0.8, 1.25);
+  std::uniform_real_distribution<double> angle(-kPi / 3, kPi / 3), shift(-3, 3), scale(0.8, 1.25);
   std::vector<double> T(24);
   for (int i = 0; i < 4; ++i) {
     const double a = angle(rng), s = scale(rng), hx = kHandles[2 * i], hy = kHandles[2 * i + 1];
@@ -135,10 +136,10 @@ TEST(SkinRig, DetectsTheArtworkJunctions) {
   const SplineSet s = artwork();
   const std::vector<Continuity> k = detected(s);
   ASSERT_EQ(k.size(), 8u);
-  EXPECT_EQ(k[0], Continuity::C1);  // closed blob: anchors 0 and 3 keep equal handles
-  EXPECT_EQ(k[1], Continuity::G1);
-  EXPECT_EQ(k[4], Continuity::C0);  // the corner
-  EXPECT_EQ(k[6], Continuity::C1);  // wave
+  EXPECT_EQ(k[0], Continuity::kC1);  // closed blob: anchors 0 and 3 keep equal handles
+  EXPECT_EQ(k[1], Continuity::kG1);
+  EXPECT_EQ(k[4], Continuity::kC0);  // the corner
+  EXPECT_EQ(k[6], Continuity::kC1);  // wave
 }
 
 TEST(SkinRig, IdentityPoseReproducesTheInput) {
@@ -172,7 +173,7 @@ TEST(SkinRig, ASharedSimilarityGivesItsExactImage) {
     std::copy(t, t + 6, T + 6 * i);
   }
   // (only when no angle constraint is present: an affine map does not keep angles) — unconstrained:
-  SkinRig free = make_rig(s, std::vector<Continuity>(8, Continuity::C0));
+  SkinRig free = make_rig(s, std::vector<Continuity>(8, Continuity::kC0));
   const double* Y = free.update(T);
   for (int k = 0; k < s.point_count(); ++k) {
     EXPECT_NEAR(Y[2 * k], 1.2 * s.points[2 * k] - 0.4 * s.points[2 * k + 1] + 2, 1e-9);
@@ -183,7 +184,7 @@ TEST(SkinRig, ASharedSimilarityGivesItsExactImage) {
 TEST(SkinRig, ConstraintsHoldOnRandomPoses) {
   const SplineSet s = artwork();
   std::vector<Continuity> kinds = detected(s);
-  kinds[4] = Continuity::Angle;  // keep the corner's angle
+  kinds[4] = Continuity::kAngle;  // keep the corner's angle
   SkinRig rig = make_rig(s, kinds);
   EXPECT_EQ(rig.constrained_count(), 8);
   std::mt19937 rng(42);
@@ -196,19 +197,19 @@ TEST(SkinRig, ConstraintsHoldOnRandomPoses) {
   }
   // The naive baseline does not keep them (the test can fail).
   const std::vector<double> T = random_pose(rng);
-  EXPECT_GT(rig.constraint_residual(rig.baseline(SkinMethod::NaiveAll, T.data())), 1e-3);
+  EXPECT_GT(rig.constraint_residual(rig.baseline(SkinMethod::kNaiveAll, T.data())), 1e-3);
 }
 
 TEST(SkinRig, UnconstrainedFitBeatsEveryBaselineOnRandomPoses) {
   const SplineSet s = artwork();
-  SkinRig rig = make_rig(s, std::vector<Continuity>(8, Continuity::C0));
+  SkinRig rig = make_rig(s, std::vector<Continuity>(8, Continuity::kC0));
   std::mt19937 rng(7);
   std::vector<double> X;
   for (int trial = 0; trial < 20; ++trial) {
     const std::vector<double> T = random_pose(rng);
     X.assign(rig.update(T.data()), rig.update(T.data()) + s.points.size());
     const double fit = rig.energy(X.data(), T.data());
-    for (SkinMethod m : {SkinMethod::NaiveAll, SkinMethod::NaiveInterpolated, SkinMethod::NaiveJacobian}) {
+    for (SkinMethod m : {SkinMethod::kNaiveAll, SkinMethod::kNaiveInterpolated, SkinMethod::kNaiveJacobian}) {
       EXPECT_LE(fit, rig.energy(rig.baseline(m, T.data()), T.data()) * (1 + 1e-12)) << int(m);
     }
     // The fit is the minimizer: any perturbation raises the energy.
@@ -225,7 +226,7 @@ TEST(SkinRig, BaselinesMatchTheirDefinitions) {
   double T[24];
   identity(T, 4);
   for (int i = 0; i < 4; ++i) T[6 * i + 4] = 3, T[6 * i + 5] = -2;
-  for (SkinMethod m : {SkinMethod::NaiveAll, SkinMethod::NaiveInterpolated, SkinMethod::NaiveJacobian, SkinMethod::Fit}) {
+  for (SkinMethod m : {SkinMethod::kNaiveAll, SkinMethod::kNaiveInterpolated, SkinMethod::kNaiveJacobian, SkinMethod::kFit}) {
     const double* X = rig.baseline(m, T);
     for (int k = 0; k < s.point_count(); ++k) {
       EXPECT_NEAR(X[2 * k], s.points[2 * k] + 3, 1e-9);
@@ -236,8 +237,8 @@ TEST(SkinRig, BaselinesMatchTheirDefinitions) {
   // anchor's blended transform, which is the naive result at the anchor plus M·(H − A).
   identity(T, 4);
   T[0] = 0, T[1] = 1, T[2] = -1, T[3] = 0, T[4] = 12 + 10, T[5] = 10 - 12;
-  std::vector<double> all(rig.baseline(SkinMethod::NaiveAll, T), rig.baseline(SkinMethod::NaiveAll, T) + s.points.size());
-  const double* interp = rig.baseline(SkinMethod::NaiveInterpolated, T);
+  std::vector<double> all(rig.baseline(SkinMethod::kNaiveAll, T), rig.baseline(SkinMethod::kNaiveAll, T) + s.points.size());
+  const double* interp = rig.baseline(SkinMethod::kNaiveInterpolated, T);
   for (int k = 0; k < s.point_count(); k += 3) {  // anchors of the closed blob (count 18)
     if (k >= 18) break;
     EXPECT_NEAR(interp[2 * k], all[2 * k], 1e-12);
@@ -253,7 +254,7 @@ TEST(SkinRig, FlexibleRelaxNeverIncreasesTheEnergy) {
   const SplineSet s = artwork();
   std::vector<Continuity> kinds = detected(s);
   for (Continuity& k : kinds)
-    if (k == Continuity::C1) k = Continuity::G1;  // let every smooth junction flex
+    if (k == Continuity::kC1) k = Continuity::kG1;  // let every smooth junction flex
   SkinRig rig = make_rig(s, kinds);
   std::mt19937 rng(3);
   int improved = 0;
@@ -267,7 +268,7 @@ TEST(SkinRig, FlexibleRelaxNeverIncreasesTheEnergy) {
     const double* X = rig.points().data();
     const int n = 18;
     for (int anchor = 0; anchor < n; anchor += 3) {
-      if (kinds[anchor / 3] != Continuity::G1) continue;
+      if (kinds[anchor / 3] != Continuity::kG1) continue;
       const int in = (anchor + n - 1) % n, out = anchor + 1;
       const Vec2 a(X[2 * anchor] - X[2 * in], X[2 * anchor + 1] - X[2 * in + 1]);
       const Vec2 b(X[2 * out] - X[2 * anchor], X[2 * out + 1] - X[2 * anchor + 1]);

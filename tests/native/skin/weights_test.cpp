@@ -1,6 +1,6 @@
-// Harmonic and bounded biharmonic weights on a regular and an irregular grid mesh: operator
-// identities, interpolation, partition of unity, linear precision, KKT optimality of the BBW
-// quadratic program, point location and interpolation against brute force.
+// Harmonic and bounded biharmonic weights on a regular and an irregular grid mesh: interpolation,
+// partition of unity, linear precision, KKT optimality of the BBW quadratic program, and the
+// weights read back at points. The operators and point location have their own tests.
 #include "skin/weights.h"
 
 #include <gtest/gtest.h>
@@ -11,51 +11,17 @@
 #include <random>
 #include <vector>
 
-using namespace splinekit;
+#include "skin/operators.h"
+#include "skin/point_location.h"
+#include "test_meshes.h"
+
+using namespace splinekit::skin;
 
 namespace {
 
-struct Mesh {
-  std::vector<double> V;
-  std::vector<int32_t> F;
-  MeshView2 view() const { return {V.data(), int(V.size() / 2), F.data(), int(F.size() / 3)}; }
-  int nv() const { return int(V.size() / 2); }
-  int nf() const { return int(F.size() / 3); }
-  int at(int n, int i, int j) const { return j * (n + 1) + i; }
-};
-
-// The unit square as an n by n grid of squares, two triangles each. irregular: interior vertices
-// jittered by up to 0.3 of the spacing and diagonals chosen at random (still a valid mesh).
-Mesh grid_mesh(int n, bool irregular, unsigned seed = 7) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
-  Mesh m;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      double x = double(i) / n, y = double(j) / n;
-      if (irregular && i > 0 && i < n && j > 0 && j < n) x += jitter(rng) / n, y += jitter(rng) / n;
-      m.V.push_back(x);
-      m.V.push_back(y);
-    }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = m.at(n, i, j), b = m.at(n, i + 1, j), c = m.at(n, i + 1, j + 1), d = m.at(n, i, j + 1);
-      if (irregular && rng() % 2) {
-        m.F.insert(m.F.end(), {a, b, d, b, c, d});
-      } else {
-        m.F.insert(m.F.end(), {a, b, c, a, c, d});
-      }
-    }
-  return m;
-}
-
-std::vector<int32_t> boundary_vertices(int n) {
-  std::vector<int32_t> out;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      if (i == 0 || j == 0 || i == n || j == n) out.push_back(j * (n + 1) + i);
-  return out;
-}
+using test_meshes::boundary_vertices;
+using test_meshes::grid_mesh;
+using test_meshes::Mesh;
 
 // Vertex nearest to (x,y).
 int32_t nearest_vertex(const Mesh& m, double x, double y) {
@@ -86,7 +52,7 @@ Eigen::VectorXd column(const std::vector<double>& W, int h, int j) {
 
 // Unconstrained biharmonic weights of handle j (the BBW objective without bounds), by a direct solve.
 Eigen::VectorXd unconstrained_biharmonic(const Mesh& m, const std::vector<int32_t>& handles, int j) {
-  const Eigen::SparseMatrix<double> Q = bilaplacian(m, MassType::Voronoi);
+  const Eigen::SparseMatrix<double> Q = bilaplacian(m, MassType::kVoronoi);
   std::vector<int> slot(m.nv(), 0), free;
   for (int32_t hv : handles) slot[hv] = -1;
   for (int v = 0; v < m.nv(); ++v)
@@ -114,59 +80,6 @@ class WeightsOnMeshes : public ::testing::TestWithParam<bool> {
 };
 
 }  // namespace
-
-// ---------------------------------------------------------------------------------------------
-// Operators
-// ---------------------------------------------------------------------------------------------
-
-TEST_P(WeightsOnMeshes, LaplacianIsSymmetricWithZeroRowSumsAndKillsLinearFunctionsInside) {
-  Eigen::SparseMatrix<double> L;
-  cotangent_laplacian(mesh.view(), L);
-  ASSERT_EQ(L.rows(), mesh.nv());
-  const Eigen::SparseMatrix<double> Lt = L.transpose();
-  EXPECT_LE((L - Lt).norm(), 1e-14 * L.norm());
-  const double scale = L.cwiseAbs().toDense().maxCoeff();
-  const Eigen::VectorXd rows = L * Eigen::VectorXd::Ones(mesh.nv());
-  EXPECT_LE(rows.cwiseAbs().maxCoeff(), 1e-13 * scale);
-  // L x = 0 at interior vertices for the coordinate functions (the cotangent Laplacian's linear precision).
-  Eigen::VectorXd x(mesh.nv()), y(mesh.nv());
-  for (int v = 0; v < mesh.nv(); ++v) x[v] = mesh.V[2 * v], y[v] = mesh.V[2 * v + 1];
-  const Eigen::VectorXd Lx = L * x, Ly = L * y;
-  std::vector<char> on_boundary(mesh.nv(), 0);
-  for (int32_t b : boundary_vertices(16)) on_boundary[b] = 1;
-  for (int v = 0; v < mesh.nv(); ++v)
-    if (!on_boundary[v]) {
-      EXPECT_LE(std::abs(Lx[v]), 1e-12 * scale);
-      EXPECT_LE(std::abs(Ly[v]), 1e-12 * scale);
-    }
-  // Negative semi-definite: the diagonal is negative.
-  EXPECT_LT(L.diagonal().maxCoeff(), 0.0);
-}
-
-TEST_P(WeightsOnMeshes, MassMatricesArePositiveAndSumToTheArea) {
-  for (MassType type : {MassType::Barycentric, MassType::Voronoi}) {
-    Eigen::SparseMatrix<double> M;
-    mass_matrix(mesh.view(), type, M);
-    EXPECT_EQ(M.nonZeros(), mesh.nv());
-    EXPECT_NEAR(M.diagonal().sum(), 1.0, 1e-13);
-    EXPECT_GT(M.diagonal().minCoeff(), 0.0);
-  }
-}
-
-TEST(Weights, VoronoiMassOfAnObtuseTriangleSplitsHalfAndQuarters) {
-  // Obtuse at vertex 2: area 1, so ½ there and ¼ at the others.
-  const double V[] = {0, 0, 4, 0, 2, 0.5};
-  const int32_t F[] = {0, 1, 2};
-  Eigen::SparseMatrix<double> M;
-  mass_matrix({V, 3, F, 1}, MassType::Voronoi, M);
-  EXPECT_NEAR(M.coeff(0, 0), 0.25, 1e-15);
-  EXPECT_NEAR(M.coeff(1, 1), 0.25, 1e-15);
-  EXPECT_NEAR(M.coeff(2, 2), 0.5, 1e-15);
-}
-
-// ---------------------------------------------------------------------------------------------
-// Harmonic weights
-// ---------------------------------------------------------------------------------------------
 
 TEST_P(WeightsOnMeshes, HarmonicInterpolatesSumsToOneAndIsHarmonicAtFreeVertices) {
   const std::vector<int32_t> handles = interior_handles(mesh);
@@ -372,7 +285,7 @@ TEST(Weights, BbwReportsWhenTheIterationCapIsHit) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Point location and interpolation
+// Weights at points
 // ---------------------------------------------------------------------------------------------
 
 TEST_P(WeightsOnMeshes, InterpolationAtVerticesAndCentroids) {
@@ -406,82 +319,6 @@ TEST_P(WeightsOnMeshes, InterpolationAtVerticesAndCentroids) {
   triangle_weight_gradients(mesh.view(), W.data(), h, G.data());
   locate_gradients(grid, mesh.view(), G.data(), h, centroids.data(), mesh.nf(), at.data());
   EXPECT_EQ(at, G);
-}
-
-TEST_P(WeightsOnMeshes, LocationAgreesWithBruteForceInsideAndOutside) {
-  TriangleGrid grid;
-  build_triangle_grid(mesh.view(), grid);
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> inside(0, 1), around(-0.7, 1.7);
-  auto point_of = [&](int t, const double* b, int a) {
-    return b[0] * mesh.V[2 * mesh.F[3 * t] + a] + b[1] * mesh.V[2 * mesh.F[3 * t + 1] + a] +
-           b[2] * mesh.V[2 * mesh.F[3 * t + 2] + a];
-  };
-  for (int k = 0; k < 2000; ++k) {
-    const double x = inside(rng), y = inside(rng);
-    double b[3];
-    const int t = locate_point(grid, mesh.view(), x, y, b);
-    ASSERT_GE(t, 0);
-    EXPECT_GE(std::min({b[0], b[1], b[2]}), 0.0);
-    EXPECT_NEAR(b[0] + b[1] + b[2], 1.0, 1e-15);
-    EXPECT_NEAR(point_of(t, b, 0), x, 1e-12);
-    EXPECT_NEAR(point_of(t, b, 1), y, 1e-12);
-  }
-  // Outside the unit square the nearest point of the mesh is the clamp of the point to the square.
-  for (int k = 0; k < 2000; ++k) {
-    const double x = around(rng), y = around(rng);
-    double b[3];
-    const int t = locate_point(grid, mesh.view(), x, y, b);
-    ASSERT_GE(t, 0);
-    EXPECT_GE(std::min({b[0], b[1], b[2]}), 0.0);
-    EXPECT_NEAR(point_of(t, b, 0), std::clamp(x, 0.0, 1.0), 1e-12);
-    EXPECT_NEAR(point_of(t, b, 1), std::clamp(y, 0.0, 1.0), 1e-12);
-  }
-  // Far away, too.
-  double b[3];
-  const int t = locate_point(grid, mesh.view(), 1e6, -3e5, b);
-  EXPECT_NEAR(point_of(t, b, 0), 1.0, 1e-12);
-  EXPECT_NEAR(point_of(t, b, 1), 0.0, 1e-12);
-}
-
-TEST(Weights, LocationOfANonConvexMeshFindsTheNearestTriangleAcrossTheNotch) {
-  // An L shape: the unit square minus its upper-right quarter (grid 4x4 without the quarter).
-  Mesh m = grid_mesh(4, false);
-  std::vector<int32_t> F;
-  for (int t = 0; t < m.nf(); ++t) {
-    double cx = 0, cy = 0;
-    for (int k = 0; k < 3; ++k) cx += m.V[2 * m.F[3 * t + k]] / 3, cy += m.V[2 * m.F[3 * t + k] + 1] / 3;
-    if (!(cx > 0.5 && cy > 0.5)) F.insert(F.end(), m.F.begin() + 3 * t, m.F.begin() + 3 * t + 3);
-  }
-  // Drop the vertices strictly inside the removed quarter (they belong to no triangle).
-  std::vector<int> remap(m.nv(), -1);
-  std::vector<double> V;
-  for (int32_t& v : F) {
-    if (remap[v] < 0) remap[v] = int(V.size() / 2), V.push_back(m.V[2 * v]), V.push_back(m.V[2 * v + 1]);
-    v = remap[v];
-  }
-  m.V = V;
-  m.F = F;
-  TriangleGrid grid;
-  build_triangle_grid(m.view(), grid);
-  double b[3];
-  const int t = locate_point(grid, m.view(), 0.9, 0.6, b);  // in the notch, 0.1 above the lower arm
-  double x = 0, y = 0;
-  for (int k = 0; k < 3; ++k) x += b[k] * m.V[2 * m.F[3 * t + k]], y += b[k] * m.V[2 * m.F[3 * t + k] + 1];
-  EXPECT_NEAR(x, 0.9, 1e-12);
-  EXPECT_NEAR(y, 0.5, 1e-12);
-}
-
-TEST(Weights, GradientsOfTheCoordinateFunctionsAreTheIdentity) {
-  const Mesh mesh = grid_mesh(8, true);
-  std::vector<double> G(size_t(mesh.nf()) * 4);
-  triangle_weight_gradients(mesh.view(), mesh.V.data(), 2, G.data());  // "weights" x and y
-  for (int t = 0; t < mesh.nf(); ++t) {
-    EXPECT_NEAR(G[4 * t], 1.0, 1e-12);
-    EXPECT_NEAR(G[4 * t + 1], 0.0, 1e-12);
-    EXPECT_NEAR(G[4 * t + 2], 0.0, 1e-12);
-    EXPECT_NEAR(G[4 * t + 3], 1.0, 1e-12);
-  }
 }
 
 // ---------------------------------------------------------------------------------------------

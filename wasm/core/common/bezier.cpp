@@ -10,8 +10,6 @@ namespace {
 constexpr double kBinom3[4] = {1, 3, 3, 1};
 constexpr double kBinom6[7] = {1, 6, 15, 20, 15, 6, 1};
 
-Vec2 ctrl(const double* c, int i) { return {c[2 * i], c[2 * i + 1]}; }
-
 // Roots of a t^2 + b t + c in the open interval (0,1), appended to roots; returns the count.
 int quadratic_roots_01(double a, double b, double c, double* roots) {
   int n = 0;
@@ -84,12 +82,12 @@ Eigen::Matrix4d bernstein_gram() {
 
 Vec2 bezier_point(const double* c, double t) {
   const Eigen::Vector4d b = bernstein(t);
-  return b[0] * ctrl(c, 0) + b[1] * ctrl(c, 1) + b[2] * ctrl(c, 2) + b[3] * ctrl(c, 3);
+  return b[0] * vec2_at(c, 0) + b[1] * vec2_at(c, 1) + b[2] * vec2_at(c, 2) + b[3] * vec2_at(c, 3);
 }
 
 Vec2 bezier_derivative(const double* c, double t, int order) {
   const double s = 1.0 - t;
-  const Vec2 p0 = ctrl(c, 0), p1 = ctrl(c, 1), p2 = ctrl(c, 2), p3 = ctrl(c, 3);
+  const Vec2 p0 = vec2_at(c, 0), p1 = vec2_at(c, 1), p2 = vec2_at(c, 2), p3 = vec2_at(c, 3);
   switch (order) {
     case 0:
       return bezier_point(c, t);
@@ -105,7 +103,7 @@ Vec2 bezier_derivative(const double* c, double t, int order) {
 }
 
 void bezier_split(const double* c, double t, double* left, double* right) {
-  const Vec2 p0 = ctrl(c, 0), p1 = ctrl(c, 1), p2 = ctrl(c, 2), p3 = ctrl(c, 3);
+  const Vec2 p0 = vec2_at(c, 0), p1 = vec2_at(c, 1), p2 = vec2_at(c, 2), p3 = vec2_at(c, 3);
   const Vec2 a = p0 + t * (p1 - p0), b = p1 + t * (p2 - p1), d = p2 + t * (p3 - p2);
   const Vec2 e = a + t * (b - a), f = b + t * (d - b);
   const Vec2 m = e + t * (f - e);

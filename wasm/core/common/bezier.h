@@ -9,9 +9,9 @@
 #include <Eigen/Core>
 #include <array>
 
-namespace splinekit {
+#include "geometry.h"
 
-using Vec2 = Eigen::Vector2d;
+namespace splinekit {
 
 // ---------------------------------------------------------------------------------------------
 // Bernstein basis

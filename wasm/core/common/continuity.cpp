@@ -3,12 +3,9 @@
 #include <cmath>
 
 #include "bezier.h"
+#include "geometry.h"
 
 namespace splinekit {
-
-namespace {
-Vec2 at(const double* p) { return {p[0], p[1]}; }
-}  // namespace
 
 ContinuityOptions continuity_options_for_size(double size, double relative_tolerance) {
   ContinuityOptions o;
@@ -20,34 +17,33 @@ ContinuityOptions continuity_options_for_size(double size, double relative_toler
 JunctionInfo classify_junction(const double* in_far, const double* h_in, const double* p,
                                const double* h_out, const double* out_far,
                                const ContinuityOptions& options) {
-  const Vec2 P = at(p);
-  const Vec2 a = P - at(h_in), b = at(h_out) - P;  // tangent vectors in and out
+  const Vec2 P = vec2_at(p);
+  const Vec2 a = P - vec2_at(h_in), b = vec2_at(h_out) - P;  // tangent vectors in and out
   const double eps = options.length_tolerance;
   const bool a_ok = a.norm() > eps, b_ok = b.norm() > eps;
 
   // Tangent directions: the handle, or the next distinct control point when it is degenerate.
   Vec2 da = a, db = b;
-  if (!a_ok) da = P - at(in_far);
-  if (!b_ok) db = at(out_far) - P;
+  if (!a_ok) da = P - vec2_at(in_far);
+  if (!b_ok) db = vec2_at(out_far) - P;
 
   JunctionInfo info;
-  info.kind = Continuity::C0;
+  info.kind = Continuity::kC0;
   info.ratio = (a_ok && b_ok) ? b.norm() / a.norm() : 0.0;
   const double la = da.norm(), lb = db.norm();
   if (la <= eps || lb <= eps) {
     info.angle = 0.0;  // a degenerate segment has no direction to compare
     return info;
   }
-  const double cross = da.x() * db.y() - da.y() * db.x();
-  const double dot = da.dot(db);
-  info.angle = std::atan2(cross, dot);
+  const double sine = cross(da, db), dot = da.dot(db);  // |da| |db| sin and cos of the turn
+  info.angle = std::atan2(sine, dot);
   if (!(a_ok && b_ok)) return info;
 
-  const bool collinear = dot > 0 && std::abs(cross) <= options.angle_tolerance * la * lb;
+  const bool collinear = dot > 0 && std::abs(sine) <= options.angle_tolerance * la * lb;
   if (!collinear) return info;
   const double length_gap = std::abs(lb - la);
   const bool equal = length_gap <= eps || std::abs(info.ratio - 1.0) <= options.ratio_tolerance;
-  info.kind = equal ? Continuity::C1 : Continuity::G1;
+  info.kind = equal ? Continuity::kC1 : Continuity::kG1;
   return info;
 }
 

@@ -7,12 +7,13 @@
 
 namespace splinekit {
 
+// The numbers cross to TS: src/spline/spline.ts CONTINUITY_KINDS lists the kinds in this order.
 enum class Continuity : int {
-  None = 0,   // a break: nothing is preserved (only set by the user, never detected)
-  C0 = 1,     // position only: a corner
-  C1 = 2,     // equal tangent vectors: H_out - P = P - H_in
-  G1 = 3,     // collinear tangents with a fixed length ratio: H_out - P = ratio (P - H_in)
-  Angle = 4,  // a corner whose angle is kept (only set by the user, detected corners are C0)
+  kNone = 0,   // a break: nothing is preserved (only set by the user, never detected)
+  kC0 = 1,     // position only: a corner
+  kC1 = 2,     // equal tangent vectors: H_out - P = P - H_in
+  kG1 = 3,     // collinear tangents with a fixed length ratio: H_out - P = ratio (P - H_in)
+  kAngle = 4,  // a corner whose angle is kept (only set by the user, detected corners are C0)
 };
 
 // Tolerances of the classifier. Lengths are absolute (drawing units): callers derive them from
@@ -29,7 +30,7 @@ ContinuityOptions continuity_options_for_size(double size, double relative_toler
 
 // The classification of one junction.
 struct JunctionInfo {
-  Continuity kind = Continuity::C0;
+  Continuity kind = Continuity::kC0;
   double ratio = 1.0;  // |H_out - P| / |P - H_in| (C1, G1); 0 when a handle is degenerate
   double angle = 0.0;  // signed turn (radians, in (-pi, pi]) from the incoming to the outgoing tangent
 };

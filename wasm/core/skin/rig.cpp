@@ -5,9 +5,10 @@
 #include <cmath>
 
 #include "common/bezier.h"
+#include "common/geometry.h"
 #include "shepard.h"
 
-namespace splinekit {
+namespace splinekit::skin {
 
 namespace {
 
@@ -16,8 +17,6 @@ Eigen::Matrix2d rotation(double angle) {
   r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
   return r;
 }
-
-Eigen::Vector2d point(const double* xy, int k) { return {xy[2 * k], xy[2 * k + 1]}; }
 
 bool finite(const std::vector<double>& v) {
   for (double x : v)
@@ -75,14 +74,14 @@ std::string SkinRig::setup(const SplineSet& rest, const std::vector<Continuity>&
     const int base = rest_.start[s], count = rest_.count[s];
     for (int q = 0; q < spline_junction_count(count, closed); ++q, ++j) {
       const Continuity kind = kinds[j];
-      if (kind != Continuity::C1 && kind != Continuity::G1 && kind != Continuity::Angle) continue;
+      if (kind != Continuity::kC1 && kind != Continuity::kG1 && kind != Continuity::kAngle) continue;
       const int anchor = closed ? 3 * q : 3 * (q + 1);
       Junction c{base + (anchor + count - 1) % count, base + anchor, base + (anchor + 1) % count, kind, 1.0, 0.0};
-      const Eigen::Vector2d a = point(rest_.points.data(), c.anchor) - point(rest_.points.data(), c.in);
-      const Eigen::Vector2d b = point(rest_.points.data(), c.out) - point(rest_.points.data(), c.anchor);
+      const Vec2 a = vec2_at(rest_.points.data(), c.anchor) - vec2_at(rest_.points.data(), c.in);
+      const Vec2 b = vec2_at(rest_.points.data(), c.out) - vec2_at(rest_.points.data(), c.anchor);
       if (a.norm() <= 1e-12 * (1 + total_length_) || b.norm() <= 1e-12 * (1 + total_length_)) continue;  // no tangent to keep
       c.ratio = b.norm() / a.norm();
-      c.angle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+      c.angle = std::atan2(cross(a, b), a.dot(b));
       junctions_.push_back(c);
     }
   }
@@ -93,8 +92,8 @@ std::string SkinRig::setup(const SplineSet& rest, const std::vector<Continuity>&
   sample_points_.assign(2 * curves_.size() * size_t(S), 0.0);
   for (size_t c = 0; c < curves_.size(); ++c)
     for (int s = 0; s < S; ++s) {
-      Eigen::Vector2d p = Eigen::Vector2d::Zero();
-      for (int a = 0; a < 4; ++a) p += bernstein_(a, s) * point(rest_.points.data(), curves_[c][a]);
+      Vec2 p = Vec2::Zero();
+      for (int a = 0; a < 4; ++a) p += bernstein_(a, s) * vec2_at(rest_.points.data(), curves_[c][a]);
       sample_points_[2 * (c * S + s)] = p.x();
       sample_points_[2 * (c * S + s) + 1] = p.y();
     }
@@ -174,7 +173,7 @@ std::string SkinRig::precompute() {
   hessian_.setFromTriplets(triplets.begin(), triplets.end());
 
   // Reduced system SᵀHS y = Sᵀ rhs, X = S y: one factorization for every pose.
-  const Eigen::SparseMatrix<double> sub = substitution(Form::Ratio, nullptr);
+  const Eigen::SparseMatrix<double> sub = substitution(Form::kRatio, nullptr);
   const Eigen::SparseMatrix<double> reduced = sub.transpose() * hessian_ * sub;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(reduced);
   if (solver.info() != Eigen::Success) return "the skinning system could not be factorized (degenerate curves?)";
@@ -192,16 +191,16 @@ Eigen::SparseMatrix<double> SkinRig::substitution(Form form, const double* curre
   std::vector<int> role(N, -1);  // -1 free; else index into junctions_ (H_out, or H_in when flexible)
   for (size_t j = 0; j < junctions_.size(); ++j) {
     role[junctions_[j].out] = int(j);
-    if (form == Form::Direction && junctions_[j].kind != Continuity::C1) role[junctions_[j].in] = int(j);
+    if (form == Form::kDirection && junctions_[j].kind != Continuity::kC1) role[junctions_[j].in] = int(j);
   }
   std::vector<int> var(N, -1);
   int vars = 0;
   for (int k = 0; k < N; ++k)
     if (role[k] < 0) var[k] = vars, vars += 2;
   std::vector<int> scalar(junctions_.size(), -1);
-  if (form == Form::Direction)
+  if (form == Form::kDirection)
     for (size_t j = 0; j < junctions_.size(); ++j)
-      if (junctions_[j].kind != Continuity::C1) scalar[j] = vars, vars += 2;
+      if (junctions_[j].kind != Continuity::kC1) scalar[j] = vars, vars += 2;
 
   std::vector<Eigen::Triplet<double>> t;
   t.reserve(2 * N + 8 * junctions_.size());
@@ -212,10 +211,10 @@ Eigen::SparseMatrix<double> SkinRig::substitution(Form form, const double* curre
     const Eigen::Matrix2d R = rotation(c.angle);
     if (scalar[j] >= 0) {
       // H_in = P − α u, H_out = P + β R u, u the current unit direction of a = P − H_in.
-      Eigen::Vector2d u = point(current, c.anchor) - point(current, c.in);
-      if (u.norm() <= 1e-300) u = point(rest_.points.data(), c.anchor) - point(rest_.points.data(), c.in);
+      Vec2 u = vec2_at(current, c.anchor) - vec2_at(current, c.in);
+      if (u.norm() <= 1e-300) u = vec2_at(rest_.points.data(), c.anchor) - vec2_at(rest_.points.data(), c.in);
       u.normalize();
-      const Eigen::Vector2d v = R * u;
+      const Vec2 v = R * u;
       for (int r = 0; r < 2; ++r) {
         t.emplace_back(2 * c.in + r, var[c.anchor] + r, 1.0);
         t.emplace_back(2 * c.in + r, scalar[j], -u[r]);
@@ -226,9 +225,9 @@ Eigen::SparseMatrix<double> SkinRig::substitution(Form form, const double* curre
     }
     // H_out = P + ρR(P − H_in): rest ρ, or the current one for a flexible junction mid-relax.
     double rho = c.ratio;
-    if (current && c.kind != Continuity::C1) {
-      const double la = (point(current, c.anchor) - point(current, c.in)).norm();
-      const double lb = (point(current, c.out) - point(current, c.anchor)).norm();
+    if (current && c.kind != Continuity::kC1) {
+      const double la = (vec2_at(current, c.anchor) - vec2_at(current, c.in)).norm();
+      const double lb = (vec2_at(current, c.out) - vec2_at(current, c.anchor)).norm();
       if (la > 1e-300) rho = lb / la;
     }
     const Eigen::Matrix2d M = rho * R;
@@ -259,7 +258,7 @@ void SkinRig::build_rhs(const double* transforms, Eigen::VectorXd& rhs) const {
 }
 
 const double* SkinRig::baseline(SkinMethod method, const double* T) {
-  if (method == SkinMethod::Fit) return update(T);
+  if (method == SkinMethod::kFit) return update(T);
   const int N = rest_.point_count(), H = handles_;
   const double* P = rest_.points.data();
   // s at p with the weights of point k: Σ_i w_i T_i [p; 1].
@@ -273,7 +272,7 @@ const double* SkinRig::baseline(SkinMethod method, const double* T) {
     }
   };
   for (int k = 0; k < N; ++k) blend(k, P[2 * k], P[2 * k + 1], &baseline_[2 * k]);
-  if (method == SkinMethod::NaiveAll) return baseline_.data();
+  if (method == SkinMethod::kNaiveAll) return baseline_.data();
   for (int s = 0; s < rest_.spline_count(); ++s) {
     const int base = rest_.start[s], count = rest_.count[s];
     for (int l = 0; l < count; ++l) {
@@ -281,7 +280,7 @@ const double* SkinRig::baseline(SkinMethod method, const double* T) {
       const int k = base + l;
       const int anchor = base + (l % 3 == 1 ? l - 1 : (l + 1) % count);
       const double ax = P[2 * anchor], ay = P[2 * anchor + 1];
-      if (method == SkinMethod::NaiveInterpolated) {
+      if (method == SkinMethod::kNaiveInterpolated) {
         blend(anchor, P[2 * k], P[2 * k + 1], &baseline_[2 * k]);
         continue;
       }
@@ -334,7 +333,7 @@ double SkinRig::energy(const double* X, const double* T) const { return error(X,
 double SkinRig::constraint_residual(const double* X) const {
   double worst = 0;
   for (const Junction& c : junctions_) {
-    const Eigen::Vector2d a = point(X, c.anchor) - point(X, c.in), b = point(X, c.out) - point(X, c.anchor);
+    const Vec2 a = vec2_at(X, c.anchor) - vec2_at(X, c.in), b = vec2_at(X, c.out) - vec2_at(X, c.anchor);
     worst = std::max(worst, (b - c.ratio * rotation(c.angle) * a).norm());
   }
   return worst;
@@ -348,7 +347,7 @@ RelaxReport SkinRig::relax(const double* T) {
   RelaxReport report;
   update(T);
   int flexible = 0;
-  for (const Junction& c : junctions_) flexible += c.kind != Continuity::C1;
+  for (const Junction& c : junctions_) flexible += c.kind != Continuity::kC1;
   // The energy as a quadratic form, E(X) = XᵀHX − 2 X·rhs + c, c = Σ ℓ_j ∫|s|²: cheap per step.
   Eigen::VectorXd rhs(points_.size());
   build_rhs(T, rhs);
@@ -364,7 +363,7 @@ RelaxReport SkinRig::relax(const double* T) {
   int streak = 0;
   for (int it = 0; it < options_.relax_max_iterations; ++it) {
     const int f = it % 2;
-    const Form form = f == 0 ? Form::Direction : Form::Ratio;
+    const Form form = f == 0 ? Form::kDirection : Form::kRatio;
     const Eigen::SparseMatrix<double> sub = substitution(form, points_.data());
     Eigen::SparseMatrix<double> A = sub.transpose() * hessian_ * sub;
     A.makeCompressed();
@@ -381,7 +380,7 @@ RelaxReport SkinRig::relax(const double* T) {
     if (solvers[f].info() != Eigen::Success || !y.allFinite()) break;
     // α, β > 0 (clamped, as in the paper): a handle may not flip through its anchor. They are the
     // last 2·flexible unknowns of the direction form.
-    if (form == Form::Direction)
+    if (form == Form::kDirection)
       for (Eigen::Index k = y.size() - 2 * flexible; k < y.size(); ++k) y[k] = std::max(y[k], eps);
     Eigen::Map<Eigen::VectorXd>(trial.data(), Eigen::Index(trial.size())) = sub * y;
     const double e = quadratic_energy(trial.data(), rhs) + c;
@@ -405,4 +404,4 @@ double SkinRig::quadratic_energy(const double* X, const Eigen::VectorXd& rhs) co
   return x.dot(hessian_ * x) - 2 * x.dot(rhs);
 }
 
-}  // namespace splinekit
+}  // namespace splinekit::skin

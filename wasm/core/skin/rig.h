@@ -36,7 +36,7 @@
 #include "common/continuity.h"
 #include "common/spline_set.h"
 
-namespace splinekit {
+namespace splinekit::skin {
 
 struct SkinOptions {
   int samples = 100;             // S, quadrature samples per curve (paper: 100)
@@ -51,12 +51,12 @@ struct RelaxReport {
   std::vector<double> energies;     // energy before the first and after every accepted iteration
 };
 
-// The deformation methods compared in the paper (§5).
+// The deformation methods compared in the paper (§5). The numbers cross to TS (src/skin/rig.ts).
 enum class SkinMethod : int {
-  Fit = 0,               // this rig's least-squares fit
-  NaiveAll = 1,          // every control point moved by s
-  NaiveInterpolated = 2, // anchors by s; handles by their anchor's blended transform
-  NaiveJacobian = 3,     // anchors by s; handles by the Jacobian of s at their anchor
+  kFit = 0,                // this rig's least-squares fit
+  kNaiveAll = 1,           // every control point moved by s
+  kNaiveInterpolated = 2,  // anchors by s; handles by their anchor's blended transform
+  kNaiveJacobian = 3,      // anchors by s; handles by the Jacobian of s at their anchor
 };
 
 class SkinRig {
@@ -116,13 +116,13 @@ class SkinRig {
     Continuity kind;
     double ratio, angle;  // rest ρ and θ
   };
-  enum class Form { Ratio, Direction };
+  enum class Form { kRatio, kDirection };
 
   void build_rhs(const double* transforms, Eigen::VectorXd& rhs) const;
   // XᵀHX − 2 X·rhs: the energy up to a constant.
   double quadratic_energy(const double* X, const Eigen::VectorXd& rhs) const;
-  // The substitution X = S y for the rigid constraints (Form::Ratio, current = null: rest ρ) or
-  // for a relax step (Form::Direction / Ratio with the current ρ and directions of `current`).
+  // The substitution X = S y for the rigid constraints (Form::kRatio, current = null: rest ρ) or
+  // for a relax step (Form::kDirection / Ratio with the current ρ and directions of `current`).
   Eigen::SparseMatrix<double> substitution(Form form, const double* current) const;
 
   SkinOptions options_;
@@ -143,4 +143,4 @@ class SkinRig {
   bool ready_ = false;
 };
 
-}  // namespace splinekit
+}  // namespace splinekit::skin

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-namespace splinekit {
+namespace splinekit::skin {
 
 namespace {
 
@@ -84,4 +84,4 @@ void shepard_gradients(const double* handles, int h, const double* points, int n
   }
 }
 
-}  // namespace splinekit
+}  // namespace splinekit::skin

@@ -5,7 +5,7 @@
 // the handles, and differentiable, which the Jacobian baseline needs.
 #pragma once
 
-namespace splinekit {
+namespace splinekit::skin {
 
 // Weights of `handle_count` handles (handles: #H by 2, flat x,y) at `point_count` points
 // (points: #P by 2) into out (#P by #H, row-major). power > 0.
@@ -17,4 +17,4 @@ void shepard_weights(const double* handles, int handle_count, const double* poin
 void shepard_gradients(const double* handles, int handle_count, const double* points, int point_count,
                        double power, double* out);
 
-}  // namespace splinekit
+}  // namespace splinekit::skin

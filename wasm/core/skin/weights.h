@@ -13,27 +13,26 @@
 //
 // Liu, Jacobson & Gingold 2014 (§5) mesh the artwork's domain and evaluate these weights at the
 // curve samples; the domain is built in src/skin/domain.ts and the weights are read at arbitrary
-// points by barycentric interpolation (`locate_and_interpolate`).
+// points by barycentric interpolation (`locate_and_interpolate`, point_location.h).
 //
-// Conventions: a mesh is a view of flat arrays (vertices: #V by 2 doubles x,y; triangles: #F by 3
-// int32 vertex indices, either orientation); weights are #V by #H row-major (W[v*#H + i] is the
-// weight of handle i at vertex v); gradients are #·by #H by 2 row-major, like shepard.h.
+// The solvers are built from one file each (libigl style): operators.h (cotangent Laplacian, mass
+// matrix, gradients), box_qp.h (the bound-constrained QP of one handle, on subset_solver.h and
+// supernodal_cholesky.h) and point_location.h.
+//
+// Conventions: a mesh is a view of flat arrays (mesh_view.h; vertices: #V by 2 doubles x,y;
+// triangles: #F by 3 int32 vertex indices, either orientation); weights are #V by #H row-major
+// (W[v*#H + i] is the weight of handle i at vertex v); gradients are #·by #H by 2 row-major, like
+// shepard.h.
 #pragma once
 
-#include <Eigen/SparseCore>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace splinekit {
+#include "skin/mesh_view.h"
+#include "skin/operators.h"
 
-// A 2D triangle mesh in caller-owned flat arrays (no ownership, no copy).
-struct MeshView2 {
-  const double* vertices = nullptr;   // #V by 2: x,y
-  int vertex_count = 0;               // #V
-  const int32_t* triangles = nullptr; // #F by 3: vertex indices
-  int triangle_count = 0;             // #F
-};
+namespace splinekit::skin {
 
 // ---------------------------------------------------------------------------------------------
 // Validation
@@ -47,22 +46,6 @@ struct MeshView2 {
 std::string validate_weights_input(const MeshView2& mesh, const int32_t* handles, int handle_count);
 
 // ---------------------------------------------------------------------------------------------
-// Discrete operators
-// ---------------------------------------------------------------------------------------------
-
-// Cotangent Laplacian L (#V by #V, symmetric, negative semi-definite, rows sum to 0):
-// L_ij = ½ (cot α_ij + cot β_ij) over the angles opposite edge ij, L_ii = −Σ_j L_ij.
-void cotangent_laplacian(const MeshView2& mesh, Eigen::SparseMatrix<double>& L);
-
-enum class MassType : int {
-  Barycentric = 0, // a third of each incident triangle's area
-  Voronoi = 1,     // mixed Voronoi areas (Meyer et al. 2003): circumcentric cells, obtuse triangles split ½, ¼, ¼
-};
-
-// Lumped (diagonal) mass matrix M (#V by #V); its diagonal sums to the mesh area for both types.
-void mass_matrix(const MeshView2& mesh, MassType type, Eigen::SparseMatrix<double>& M);
-
-// ---------------------------------------------------------------------------------------------
 // Weights
 // ---------------------------------------------------------------------------------------------
 
@@ -71,7 +54,7 @@ struct WeightsReport {
   std::string error;            // "" on success
   std::vector<int> iterations;  // BBW: linear solves per handle (1 = the unconstrained solution was feasible)
   bool converged = true;        // BBW: every handle's active set settled within max_iterations
-  int pinned = 0;               // BBW: vertices held at a bound to stop an active-set cycle (weights.cpp)
+  int pinned = 0;               // BBW: vertices held at a bound to stop an active-set cycle (box_qp.cpp)
   bool ok() const { return error.empty(); }
 };
 
@@ -97,13 +80,13 @@ struct BbwOptions {
                                       // weights within ~1e-4 of it on the test and benchmark meshes
                                       // (500 to 20k triangles)
   bool partition_of_unity = true;     // normalize so Σ_i w_i = 1 at every vertex (off: the raw QP optimum)
-  MassType mass = MassType::Voronoi;
+  MassType mass = MassType::kVoronoi;  // see operators.h
 };
 
 // Bounded Biharmonic Weights: per handle i, minimize ½ w_iᵀ Q w_i with Q = L M⁻¹ L subject to
 // w_i(handle_j) = δ_ij and 0 ≤ w_i ≤ 1, by a primal-dual active-set method (Hintermüller, Ito &
 // Kunisch 2002) started from the unconstrained biharmonic solution, with releases spread over
-// neighbouring rings of the active set (see weights.cpp). Each iteration fixes the active
+// neighbouring rings of the active set (box_qp.h). Each iteration fixes the active
 // variables at their bounds and solves for the rest with a supernodal sparse Cholesky; the
 // fill-reducing ordering is computed once and restricted to each iteration's free set. If a
 // handle does not settle within max_iterations, its last iterate is clamped to [0,1] and
@@ -115,45 +98,4 @@ struct BbwOptions {
 WeightsReport bbw_weights(const MeshView2& mesh, const int32_t* handles, int handle_count,
                           const BbwOptions& options, double* W);
 
-// Gradients of the piecewise-linear weights, constant per triangle (for the Jacobian baseline).
-//   W  #V by #H weights
-//   G  output, #F by #H by 2 (G[(t*#H + i)*2 + axis])
-void triangle_weight_gradients(const MeshView2& mesh, const double* W, int handle_count, double* G);
-
-// ---------------------------------------------------------------------------------------------
-// Point location and interpolation
-// ---------------------------------------------------------------------------------------------
-
-// A uniform grid over the mesh's bounding box; each cell lists the triangles whose bounding box
-// overlaps it (CSR). About one cell per triangle. Build once per mesh, then query many points.
-struct TriangleGrid {
-  double x0 = 0, y0 = 0;       // lower-left corner of cell (0,0)
-  double cell = 1;             // cell side length
-  int nx = 0, ny = 0;          // cells along x and y
-  std::vector<int32_t> start;  // nx·ny + 1 offsets into `items`; cell (i,j) is cell j·nx + i
-  std::vector<int32_t> items;  // triangle indices, cell after cell
-};
-
-// Builds the grid of a (validated) mesh.
-void build_triangle_grid(const MeshView2& mesh, TriangleGrid& grid);
-
-// The triangle holding the (finite) point (x,y) and its barycentric coordinates (bary: 3 doubles, ≥ 0, sum 1,
-// in the order of the triangle's vertices). A point outside the mesh gets the nearest triangle and
-// the barycentric coordinates of the nearest point on it.
-int locate_point(const TriangleGrid& grid, const MeshView2& mesh, double x, double y, double* bary);
-
-// Weights at query points, interpolated linearly in the triangle that holds each point.
-//   W        #V by #H vertex weights
-//   points   #P by 2
-//   out      output, #P by #H row-major
-void locate_and_interpolate(const TriangleGrid& grid, const MeshView2& mesh, const double* W, int handle_count,
-                            const double* points, int point_count, double* out);
-
-// Gradients at query points: the gradient of the triangle that holds each point.
-//   G        #F by #H by 2 (triangle_weight_gradients)
-//   points   #P by 2
-//   out      output, #P by #H by 2
-void locate_gradients(const TriangleGrid& grid, const MeshView2& mesh, const double* G, int handle_count,
-                      const double* points, int point_count, double* out);
-
-}  // namespace splinekit
+}  // namespace splinekit::skin
