@@ -10,7 +10,7 @@ import { SplinekitError, checkStatus } from '../core/errors.js';
 import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
 import { parseMesh, type MeshParseOptions } from './mesh-io.js';
 import { meshHandles, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
-import type { MeshPoint, MeshPointLike } from './mesh-point.js';
+import { meshPointPosition, type MeshPoint, type MeshPointLike } from './mesh-point.js';
 
 export type { MeshPoint, MeshPointLike } from './mesh-point.js';
 
@@ -210,11 +210,7 @@ export class SurfaceMesh {
 
   /** The position in space of a mesh point or vertex. */
   xyz(p: MeshPointLike): [number, number, number] {
-    const q = this.resolve(p);
-    const t = this.triangles, x = this.positions, f = 3 * q.face;
-    const w0 = 1 - q.uv[0] - q.uv[1], w1 = q.uv[0], w2 = q.uv[1];
-    const a = 3 * t[f], b = 3 * t[f + 1], c = 3 * t[f + 2];
-    return [0, 1, 2].map((i) => w0 * x[a + i] + w1 * x[b + i] + w2 * x[c + i]) as [number, number, number];
+    return meshPointPosition(this.positions, this.triangles, this.resolve(p));
   }
 
   /** Unit normal of the point's face (as wound in the file). */

@@ -1,6 +1,6 @@
+import { affine } from '../../../src/index.js';
 import type { AffineMatrix } from '../../../src/index.js';
 import type { ViewPointer } from '../../view2d/view2d.js';
-import { angleOf, multiply, rotationAbout, scaleOf, scalingAbout, translation } from './affine.js';
 import type { SkinSpec } from './spec.js';
 
 /** Radians per pixel of horizontal motion for Shift+drag, and the scale rate of Alt+drag. */
@@ -46,7 +46,7 @@ export function poseFor(g: PoseGesture, p: ViewPointer): { m: AffineMatrix; read
   const [cx, cy] = g.pivot;
   let m: AffineMatrix;
   if (g.op === 'move') {
-    m = multiply(translation(p.x - g.start.x, p.y - g.start.y), g.m0);
+    m = affine.multiply(affine.translation(p.x - g.start.x, p.y - g.start.y), g.m0);
   } else if (g.op === 'rotate') {
     let theta =
       g.via === 'gizmo'
@@ -54,21 +54,21 @@ export function poseFor(g: PoseGesture, p: ViewPointer): { m: AffineMatrix; read
         : (p.sx - g.start.sx) * TURN_PER_PX;
     if (g.via === 'gizmo' && p.shiftKey) {
       // Snap the resulting angle (not the increment) to 15°.
-      const total = angleOf(g.m0) + theta;
+      const total = affine.angleOf(g.m0) + theta;
       theta += Math.round(total / SNAP) * SNAP - total;
     }
-    m = multiply(rotationAbout(theta, cx, cy), g.m0);
+    m = affine.multiply(affine.rotationAbout(theta, cx, cy), g.m0);
   } else {
     const k =
       g.via === 'gizmo'
         ? Math.hypot(p.x - cx, p.y - cy) / Math.max(1e-12, Math.hypot(g.start.x - cx, g.start.y - cy))
         : Math.exp(-(p.sy - g.start.sy) * SCALE_PER_PX);
-    m = multiply(scalingAbout(Math.min(20, Math.max(0.05, k)), cx, cy), g.m0);
+    m = affine.multiply(affine.scalingAbout(Math.min(20, Math.max(0.05, k)), cx, cy), g.m0);
   }
   return { m, readout: g.op === 'move' ? null : readout(m) };
 }
 
 export function readout(m: AffineMatrix): string {
-  const deg = (angleOf(m) * 180) / Math.PI;
-  return `↻ ${deg.toFixed(0)}°  ⤢ ${scaleOf(m).toFixed(2)}×`;
+  const deg = (affine.angleOf(m) * 180) / Math.PI;
+  return `↻ ${deg.toFixed(0)}°  ⤢ ${affine.scaleOf(m).toFixed(2)}×`;
 }

@@ -1,7 +1,6 @@
-import { IDENTITY_MATRIX, poseAt, type AffineMatrix, type SkinError, type SvgDocument } from '../../../src/index.js';
+import { IDENTITY_MATRIX, poseAt, type AffineMatrix, type SkinError, type SvgDocument, affine } from '../../../src/index.js';
 import { Emitter } from '../../app/events.js';
 import type { InFlight } from '../../app/in-flight.js';
-import { isIdentity } from './affine.js';
 import { buildRig, type BuiltRig } from './rig-build.js';
 import { rigKey, setPose, type SkinSpec, type WeightKind } from './spec.js';
 import { CancelledError, type WeightsClient } from './weights-client.js';
@@ -298,7 +297,7 @@ export class SkinSession {
     const T = this.transformsFor(built);
     try {
       built.rig.pose(T);
-      if (this._spec.flexible && !live && !T.every((m) => isIdentity(m))) built.rig.relax();
+      if (this._spec.flexible && !live && !T.every((m) => affine.isIdentity(m))) built.rig.relax();
       this._points = built.rig.points().slice();
     } catch (err) {
       this.setStatus({ phase: 'error', message: `Posing failed: ${err instanceof Error ? err.message : String(err)}` });

@@ -1,10 +1,9 @@
-import { IDENTITY_MATRIX } from '../../../src/index.js';
+import { IDENTITY_MATRIX, affine } from '../../../src/index.js';
 import type { LoadedDocument } from '../../app/state.js';
 import { DebouncedSave, readJSON, writeJSON } from '../../app/autosave.js';
 import { InFlight } from '../../app/in-flight.js';
 import type { Mode, ModeContext } from '../../app/modes.js';
 import type { ViewPointer } from '../../view2d/view2d.js';
-import { apply, invert, isIdentity, sameMatrix } from './affine.js';
 import { SpecCommand } from './commands.js';
 import { exportAnimated, exportPosed } from './export.js';
 import { poseFor, readout, type Gesture } from './gestures.js';
@@ -168,7 +167,7 @@ export class SkinMode implements Mode {
     }
     const m0 = s.spec.pose[index];
     const op = hit.part === 'ring' ? 'rotate' : hit.part === 'knob' ? 'scale' : p.shiftKey ? 'rotate' : p.altKey ? 'scale' : 'move';
-    this.gesture = { kind: 'pose', op, via: hit.part === 'handle' ? 'handle' : 'gizmo', id: hit.id, index, before: s.spec, m0, pivot: apply(m0, h.x, h.y), start: p, moved: false };
+    this.gesture = { kind: 'pose', op, via: hit.part === 'handle' ? 'handle' : 'gizmo', id: hit.id, index, before: s.spec, m0, pivot: affine.apply(m0, h.x, h.y), start: p, moved: false };
     this.readout = op === 'move' ? null : readout(m0);
     this.requestDraw();
     return true;
@@ -399,17 +398,17 @@ export class SkinMode implements Mode {
     }
     const spec = s.spec, id = s.nextId;
     let after: SkinSpec;
-    if (this.tool === 'pose' && spec.handles.length > 0 && !spec.pose.every((m) => isIdentity(m))) {
+    if (this.tool === 'pose' && spec.handles.length > 0 && !spec.pose.every((m) => affine.isIdentity(m))) {
       // On the posed drawing: follow the handle nearest on screen, with the rest position that
       // its pose brings under the pointer.
       let near = 0, best = Infinity;
       spec.handles.forEach((h, i) => {
-        const [px, py] = apply(spec.pose[i], h.x, h.y);
+        const [px, py] = affine.apply(spec.pose[i], h.x, h.y);
         const d = (px - x) ** 2 + (py - y) ** 2;
         if (d < best) [near, best] = [i, d];
       });
-      const inv = invert(spec.pose[near]);
-      const [rx, ry] = inv ? apply(inv, x, y) : [x, y];
+      const inv = affine.invert(spec.pose[near]);
+      const [rx, ry] = inv ? affine.apply(inv, x, y) : [x, y];
       after = addHandle(spec, id, rx, ry, near);
     } else {
       after = addHandle(spec, id, x, y);
@@ -429,7 +428,7 @@ export class SkinMode implements Mode {
     if (!s || s.spec.handles.length === 0) return;
     const i = s.indexOf(s.selected);
     const pose = s.spec.pose.map((m, k) => (i < 0 || k === i ? IDENTITY_MATRIX : m));
-    if (pose.every((m, k) => sameMatrix(m, s.spec.pose[k]))) return;
+    if (pose.every((m, k) => affine.sameMatrix(m, s.spec.pose[k]))) return;
     this.execute(i < 0 ? 'Reset pose' : 'Reset handle pose', setPose(s.spec, pose));
   }
 

@@ -1,6 +1,5 @@
-import { poseAt, type AffineMatrix, type SvgDocument } from '../../../src/index.js';
+import { poseAt, type AffineMatrix, type SvgDocument, affine } from '../../../src/index.js';
 import type { ModeContext } from '../../app/modes.js';
-import { angleOf, apply, isIdentity, sameMatrix } from './affine.js';
 import { CurveLayers, curveSamples, type CurveLayerData } from './curve-layers.js';
 import type { Gesture } from './gestures.js';
 import { HandlesLayer, type HandleMark } from './handles-layer.js';
@@ -98,11 +97,11 @@ export class SkinView {
     const spec = s.spec, g = st.gesture;
     const marks: HandleMark[] = spec.handles.map((h, i) => {
       if (g?.kind === 'rest' && g.id === h.id) return { id: h.id, x: g.x, y: g.y, label: String(i + 1) };
-      const [x, y] = st.tool === 'pose' ? apply(spec.pose[i], h.x, h.y) : [h.x, h.y];
+      const [x, y] = st.tool === 'pose' ? affine.apply(spec.pose[i], h.x, h.y) : [h.x, h.y];
       return { id: h.id, x, y, label: String(i + 1) };
     });
     const si = s.indexOf(s.selected);
-    const gizmo = st.tool === 'pose' && si >= 0 ? { id: spec.handles[si].id, x: marks[si].x, y: marks[si].y, angle: angleOf(spec.pose[si]), readout: st.readout } : null;
+    const gizmo = st.tool === 'pose' && si >= 0 ? { id: spec.handles[si].id, x: marks[si].x, y: marks[si].y, angle: affine.angleOf(spec.pose[si]), readout: st.readout } : null;
     this.handles.set(marks, s.selected, gizmo);
     this.panel.setErrors(posed ? s.errors() : null, doc.size);
     this.refreshTimeline(st);
@@ -116,7 +115,7 @@ export class SkinView {
       weights: spec.weights,
       flexible: spec.flexible,
       selected: s && s.selected !== null ? s.indexOf(s.selected) + 1 : null,
-      posed: !spec.pose.every((m) => isIdentity(m)),
+      posed: !spec.pose.every((m) => affine.isIdentity(m)),
     });
     const keyed = spec.keyframes.length >= 2;
     this.panel.setExport(s?.points != null, keyed, keyed ? 'Download the keyframed animation as an SVG that plays by itself (SMIL, no script)' : 'Key at least two poses on the timeline first (I)');
@@ -126,7 +125,7 @@ export class SkinView {
     const s = st.session, spec = s?.spec ?? EMPTY_SPEC, time = s?.time ?? 0;
     // "Unkeyed": the pose differs from what the animation (or the rest, without keys) has here.
     const expected: readonly AffineMatrix[] | null = spec.keyframes.length > 0 ? poseAt(spec.keyframes, time) : null;
-    const unkeyed = spec.handles.length > 0 && (expected ? !spec.pose.every((m, i) => sameMatrix(m, expected[i], 1e-9)) : !spec.pose.every((m) => isIdentity(m)));
+    const unkeyed = spec.handles.length > 0 && (expected ? !spec.pose.every((m, i) => affine.sameMatrix(m, expected[i], 1e-9)) : !spec.pose.every((m) => affine.isIdentity(m)));
     this.timeline.update({
       duration: spec.duration,
       time,

@@ -1,5 +1,4 @@
-import { IDENTITY_MATRIX, type AffineMatrix, type Keyframe } from '../../../src/index.js';
-import { isFiniteMatrix } from './affine.js';
+import { IDENTITY_MATRIX, type AffineMatrix, type Keyframe, affine } from '../../../src/index.js';
 
 /**
  * What the user builds in skin mode, as an immutable value: handles at their rest positions, the
@@ -152,7 +151,7 @@ export function specFromJSON(value: unknown): SkinSpec {
   if (ids.size !== j.handles.length) throw new Error('rig: handle ids must be unique');
   const n = j.handles.length;
   const matrices = (list: unknown, what: string): AffineMatrix[] => {
-    if (!Array.isArray(list) || list.length !== n || !list.every(isFiniteMatrix)) throw new Error(`rig: ${what} needs ${n} matrices of 6 finite numbers`);
+    if (!Array.isArray(list) || list.length !== n || !list.every(affine.isFiniteMatrix)) throw new Error(`rig: ${what} needs ${n} matrices of 6 finite numbers`);
     return list.map((m) => [...m] as unknown as AffineMatrix);
   };
   const keyframes = (Array.isArray(j.keyframes) ? j.keyframes : []).map((k, i) => {

@@ -1,4 +1,4 @@
-import type { SurfaceSplineJSON } from '../../../src/index.js';
+import { DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, type SurfaceSplineJSON } from '../../../src/index.js';
 import { documentKey, readJSON, writeJSON } from '../../app/autosave.js';
 import type { SurfaceDrawing } from './drawing.js';
 import type { SurfaceSession } from './session.js';
@@ -59,7 +59,16 @@ export interface SurfacePrefs {
   svgRotation: number;
 }
 
-export const DEFAULT_PREFS: SurfacePrefs = { scheme: 'olr', subdivision: 'uniform', levels: 5, angle: 5, flat: false, svgSize: 0.35, svgRotation: 0 };
+/** The package's trace defaults (scheme and its levels), the paper's 5° for adaptive, and the panel's own. */
+export const DEFAULT_PREFS: SurfacePrefs = {
+  scheme: DEFAULT_TRACE_SCHEME,
+  subdivision: 'uniform',
+  levels: DEFAULT_TRACE_LEVELS[DEFAULT_TRACE_SCHEME],
+  angle: 5,
+  flat: false,
+  svgSize: 0.35,
+  svgRotation: 0,
+};
 
 export function loadPrefs(): SurfacePrefs {
   const p = (readJSON(PREFS_KEY) ?? {}) as Partial<SurfacePrefs>;
