@@ -427,6 +427,33 @@ ${geo.join('\n')}
 Refined: ${pct(refinedMin)}–${pct(refinedMax)} of paths within 0.5% of the exact distance; dual graph: ${pct(dualMin)}–${pct(dualMax)}.
 Paths shorter than exact: **${shorter}**.
 
+### Why these defaults (ShortestPathOptions)
+
+The defaults of wasm/core/surface/geodesic_options.h, and what they were chosen on (measured when each
+was set; the header says what each option does).
+
+- **steiner = 4, long_edge_fraction = 0.01** (phase (i), the search graph). The paper puts one node
+  per face and extra nodes only on edges longer than 5% of the bounding-box diagonal. On the shared
+  meshes, 4 nodes per edge and 1% take the share of paths within 0.5% of the exact geodesic distance
+  (the table above) from 15-96% to 99-100%; 3 nodes gave 94% on mountain and stanford_bunny, 5 gave
+  100% there at 1.5x the time of 4.
+- **dual_heuristic_weight = 3** (the kDual search that curve tracing uses; weighted A*). On random
+  whole-surface curves of nefertiti and spot_loop2_369k, a weight of 2 visits 7-20 times fewer nodes
+  than 1 (the search drops from most of the trace time to a tenth of it); the paths are locally
+  shortest either way and a little more often not globally (the dual column above), which curve
+  tracing accepts: after the first level its paths join nearby points. 3 cuts the long tail of
+  searches that must go round a concave region (spot_loop2_369k, random face pairs: p90 23k nodes
+  visited at 2, 2.7k at 3, 1.2k at 4); phase (iii)'s chords make up for the rougher strips (curves on
+  average 0.3% longer on nefertiti, 0.2% shorter on spot_loop2_369k; 4 makes nefertiti's 1% longer).
+- **chord_min_turn = 0.01 rad** (phase (iii)). Late in the straightening the path bends a little at
+  apices far apart, and a chord there walks all the way between the neighbouring apices for a small
+  gain; smaller bends get the semi-star (and zipper) flip. On random whole-surface curves (OLR, 5
+  levels, wasm, each curve traced by both builds in turn), 0.01 takes 4-7% off the trace time on
+  spot_loop2_369k and 1% on nefertiti, with curves as long within 0.1%; 0.03 saves 1.5% more on
+  spot_loop2_369k but settles more first-level sides on other (longer) local geodesics.
+- **max_passes = 100000** (phase (iii)): a safety bound on the passes (each flips every reflex vertex
+  whose faces do not touch another's), not a tuning knob.
+
 ### Memory and precompute
 
 Bytes held by the mesh structures (positions, faces, adjacency, vertex maps, file<->mesh face maps (8 bytes per triangle, since 2026-12-02: 5% faster curves on spot_loop2_369k, 9.5% on nefertiti, by the locality of the mesh order): mesh_bytes) and by the

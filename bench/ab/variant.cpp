@@ -60,7 +60,8 @@ extern "C" void* SPLINEKIT_AB(ab_init_)(const char* mesh_path, const char* point
     int face;
     double uv[2];
     if (fread(&face, sizeof(int), 1, in) != 1 || fread(uv, sizeof(double), 2, in) != 2) return nullptr;
-    side->points.push_back(to_mesh_point(side->mesh, MeshPoint{face, Vec2(uv[0], uv[1])}));
+    // (Eigen's own name: older trees call it surface::Vec2, newer ones splinekit::Vec2)
+    side->points.push_back(to_mesh_point(side->mesh, MeshPoint{face, Eigen::Vector2d(uv[0], uv[1])}));
   }
   fclose(in);
   return side.release();

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.h"
 #include "spline_set_handle.h"
 #include "surface/curves.h"
 #include "surface/edit.h"
@@ -264,7 +265,7 @@ class SurfaceMeshHandle {
     if (adaptive_degrees > 0) {
       if (!(adaptive_degrees < 180)) return fail("the adaptive angle must lie between 0 and 180 degrees"), false;
       options.adaptive = true;
-      options.angle = adaptive_degrees * 3.14159265358979323846 / 180;
+      options.angle = adaptive_degrees * kPi / 180;
     } else {
       if (levels < 0 || levels > 12) return fail("levels must lie between 0 and 12"), false;
       options.levels = levels;

@@ -359,7 +359,7 @@ std::vector<ControlPolygon> hop_polygons(const TriMesh& mesh, int count, double 
     poly[0] = {face(rng), Vec2(a, b)};
     bool ok = true;
     for (int i = 1; i < 4 && ok; ++i) {
-      const double angle = 2 * 3.14159265358979323846 * u(rng);
+      const double angle = 2 * kPi * u(rng);
       StraightestGeodesic g;
       straightest_geodesic(mesh, poly[i - 1], polar_tangent(mesh, poly[i - 1], angle), hop * (0.6 + 0.8 * u(rng)), g);
       ok = !g.hit_boundary;

@@ -264,8 +264,8 @@ TEST(ShortestPath, FlipsAZipperOfCollinearVerticesAtOnce) {
   const double length = straighten_via({{0.1, row + 0.3 * cell}, {0.15, row - 0.3 * cell}, {0.85, row - 0.3 * cell}, {0.9, row + 0.3 * cell}},
                                        false, stats);
   EXPECT_NEAR(length, 0.8, 1e-9);
-  EXPECT_LE(stats.flips, 5);
-  EXPECT_EQ(stats.frozen, 0);
+  EXPECT_LE(stats.accepted_flips, 5);
+  EXPECT_EQ(stats.frozen_vertices, 0);
 }
 
 TEST(ShortestPath, CrossesManyRowsAlongAChord) {
@@ -276,14 +276,14 @@ TEST(ShortestPath, CrossesManyRowsAlongAChord) {
   PathStats with, without;
   EXPECT_NEAR(straighten_via(via, true, with), 0.8, 1e-9);
   EXPECT_NEAR(straighten_via(via, false, without), 0.8, 1e-9);
-  EXPECT_LE(with.flips, 30);
-  EXPECT_GE(without.flips, 60);
-  EXPECT_EQ(with.frozen, 0);
+  EXPECT_LE(with.accepted_flips, 30);
+  EXPECT_GE(without.accepted_flips, 60);
+  EXPECT_EQ(with.frozen_vertices, 0);
   // Chords are traced only where the path turns by more than chord_min_turn: with a bound above
   // every possible turn (π) the straightening makes exactly the flips it makes without chords.
   PathStats gated;
   EXPECT_NEAR(straighten_via(via, true, gated, 3.2), 0.8, 1e-9);
-  EXPECT_EQ(gated.flips, without.flips);
+  EXPECT_EQ(gated.accepted_flips, without.accepted_flips);
 }
 
 TEST(UnfoldStrip, LaysFacesIsometricallyAndReusesACommonStartExactly) {
@@ -405,7 +405,7 @@ TEST(ShortestPath, IsTheFunnelPathOfItsOwnStrip) {
       GeodesicPath path, again;
       PathStats stats;
       ASSERT_TRUE(solver.shortest_path(a, b, path, &stats, graph));
-      flipped += stats.flips;
+      flipped += stats.accepted_flips;
       std::vector<int> strip = path.strip;
       plain.straighten(path.start, path.end, strip, again);
       ASSERT_EQ(again.strip, path.strip);

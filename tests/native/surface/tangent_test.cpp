@@ -17,8 +17,6 @@ namespace {
 
 using testing::point_at;
 
-constexpr double kPi = 3.14159265358979323846;
-
 Vec3 pos(const TriMesh& mesh, const MeshPoint& p) { return eval_position(mesh, p); }
 
 

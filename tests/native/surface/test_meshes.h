@@ -93,10 +93,9 @@ inline Arrays cube(int n) {
 // An open cylinder of radius r and height h around the z axis: `around` x `up` quads, split.
 inline Arrays cylinder(int around, int up, double r = 1, double h = 2) {
   Arrays a;
-  const double pi = 3.14159265358979323846;
   for (int j = 0; j <= up; ++j)
     for (int i = 0; i < around; ++i) {
-      const double phi = 2 * pi * i / around;
+      const double phi = 2 * kPi * i / around;
       a.positions.insert(a.positions.end(), {r * std::cos(phi), r * std::sin(phi), h * j / up});
     }
   for (int j = 0; j < up; ++j)

@@ -6,8 +6,6 @@ namespace splinekit::surface {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // The handle at `handle` as (direction at the anchor, length).
 struct Arm {
   Tangent dir;

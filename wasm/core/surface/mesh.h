@@ -12,6 +12,8 @@
 // to_file_point).
 #pragma once
 
+#include "common/geometry.h"  // Vec2, Vec3 (and kPi, cross, orient) for the whole surface core
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -22,9 +24,6 @@
 #include <vector>
 
 namespace splinekit::surface {
-
-using Vec2 = Eigen::Vector2d;
-using Vec3 = Eigen::Vector3d;
 
 // A point on the mesh: a face and barycentric coordinates (u, v) with respect to its vertices
 // (p = (1-u-v)·p0 + u·p1 + v·p2).

@@ -9,8 +9,6 @@ namespace splinekit::surface {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // The corner of face f at vertex v: unit first edge e (towards t[k+1]), its in-plane perpendicular y
 // (towards the corner's inside), and the corner angle.
 struct Corner {

@@ -105,7 +105,7 @@ PlaneMotion PlaneMotion::between(const std::array<Vec2, 3>& was, const std::arra
   const double aa = a.squaredNorm();
   PlaneMotion m;
   if (aa > 0) {
-    const double c = a.dot(b), s = a.x() * b.y() - a.y() * b.x(), len = std::hypot(c, s);
+    const double c = a.dot(b), s = cross(a, b), len = std::hypot(c, s);
     if (len > 0) m.c = c / len, m.s = s / len;
   }
   // No motion beyond the layouts' rounding (a flat region between the changes): none at all, so

@@ -1,0 +1,436 @@
+// The straightening's steps one at a time (straighten.h), each against what a hand-made mesh says
+// it must give: the semi-star flip takes a vertex's other side (or freezes a saddle), a zipper takes
+// in exactly the vertices that still block, a chord's faces are those the straight line crosses,
+// apply lays the new strip as a fresh layout would, and a pass is what the whole loop repeats.
+#include "surface/geodesic.h"
+#include "surface/straighten.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace splinekit::surface {
+namespace {
+
+using testing::Arrays;
+
+int vertex_near(const TriMesh& mesh, const Vec3& p) {
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    if ((mesh.positions[v] - p).norm() < 1e-9) return static_cast<int>(v);
+  ADD_FAILURE() << "no vertex at " << p.transpose();
+  return -1;
+}
+
+MeshPoint centroid(int face) { return {face, Vec2(1.0 / 3, 1.0 / 3)}; }
+
+// Consecutive faces share an edge and no face comes twice.
+void expect_strip(const TriMesh& mesh, const std::vector<int>& strip) {
+  for (size_t i = 0; i + 1 < strip.size(); ++i) EXPECT_GE(edge_to(mesh, strip[i], strip[i + 1]), 0) << "faces " << i << ", " << i + 1;
+  std::vector<int> sorted = strip;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a face twice";
+}
+
+// A layout `u` of `strip` that matches a fresh unfolding of it (the first face is laid alike).
+void expect_fresh_layout(const TriMesh& mesh, const std::vector<int>& strip, const UnfoldedStrip& u) {
+  UnfoldedStrip fresh;
+  unfold_strip(mesh, strip, fresh);
+  ASSERT_EQ(u.faces, strip);
+  ASSERT_EQ(u.corners.size(), fresh.corners.size());
+  for (size_t i = 0; i < strip.size(); ++i)
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR((u.corners[i][k] - fresh.corners[i][k]).norm(), 0, 1e-12) << "face " << i;
+  for (size_t i = 0; i + 1 < strip.size(); ++i) {
+    EXPECT_EQ(u.portals[i].left_vertex, fresh.portals[i].left_vertex);
+    EXPECT_EQ(u.portals[i].right_vertex, fresh.portals[i].right_vertex);
+  }
+}
+
+// The strip of the straight shortest paths through `via` on a flat mesh (consecutive pieces meet
+// inside a face), loops cut: the kind of strip phase (i) hands over, bent where `via` bends.
+std::vector<int> strip_through(const TriMesh& mesh, const std::vector<MeshPoint>& via) {
+  GeodesicSolver solver(mesh);
+  std::vector<int> strip;
+  for (size_t i = 0; i + 1 < via.size(); ++i) {
+    GeodesicPath piece;
+    EXPECT_TRUE(solver.shortest_path(via[i], via[i + 1], piece));
+    if (!strip.empty()) {
+      EXPECT_EQ(strip.back(), piece.strip.front());
+    }
+    strip.insert(strip.end(), piece.strip.begin() + (strip.empty() ? 0 : 1), piece.strip.end());
+  }
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  remove_loops(strip, marks);
+  return strip;
+}
+
+MeshPoint at_xy(const TriMesh& mesh, double x, double y) { return testing::point_at(mesh, Vec3(x, y, 0)); }
+
+// ---- Semi-star ----------------------------------------------------------------------------------
+
+TEST(StraightenerFlip, TakesTheOtherSemiStarOfAFlatVertex) {
+  // The 8 faces around the middle vertex of a 4 x 4 grid; the strip holds 6 of them (270°), so the
+  // path between the centroids of its ends bends at the vertex. Its other semi-star is the other 2.
+  const TriMesh mesh = testing::build(testing::planar_grid(4, 1, 0));
+  const int v = vertex_near(mesh, {0.5, 0.5, 0});
+  std::vector<int> fan;
+  bool closed;
+  vertex_fan(mesh, v, fan, closed);
+  ASSERT_TRUE(closed);
+  ASSERT_EQ(fan.size(), 8u);
+  const std::vector<int> strip(fan.begin(), fan.begin() + 6);
+  const MeshPoint a = centroid(strip.front()), b = centroid(strip.back());
+  const Vec3 pa = eval_position(mesh, a), pb = eval_position(mesh, b), pv = mesh.positions[v];
+
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  s.begin(a, b, strip);
+  ASSERT_EQ(s.apices().size(), 3u);
+  EXPECT_EQ(s.apices()[1].vertex, v);
+  EXPECT_NEAR(s.length(), (pv - pa).norm() + (pb - pv).norm(), 1e-12);
+  const double turn = turn_at(s.apices(), 1);
+  EXPECT_NEAR(turn, std::acos((pv - pa).normalized().dot((pb - pv).normalized())), 1e-9);
+
+  int first, last;
+  ASSERT_TRUE(s.run_of(v, s.apices()[1].portal, first, last));
+  EXPECT_EQ(first, 0);
+  EXPECT_EQ(last, 5);
+  Flip flip;
+  ASSERT_TRUE(s.flip(1, turn, first, last, flip));
+  EXPECT_EQ(flip.vertex, v);
+  EXPECT_EQ(flip.other, (std::vector<int>{fan[7], fan[6]}));  // from strip[first] the other way round
+  EXPECT_FALSE(flip.chain || flip.chord);
+
+  // Made, the strip is the 4 faces on the other side; on a plane its funnel path is the segment.
+  std::vector<int> out;
+  UnfoldedStrip u;
+  Splice splice;
+  s.apply({&flip}, out, u, splice);
+  EXPECT_EQ(out, (std::vector<int>{fan[0], fan[7], fan[6], fan[5]}));
+  expect_strip(mesh, out);
+  expect_fresh_layout(mesh, out, u);
+  std::vector<Apex> raw, apices;
+  EXPECT_NEAR(s.shorten(u, raw, apices, splice.path ? &splice : nullptr), (pb - pa).norm(), 1e-12);
+  EXPECT_EQ(apices.size(), 2u);
+}
+
+// A saddle: a vertex whose 6 faces alternate up and down, so that its angle sum exceeds 2π.
+Arrays saddle() {
+  Arrays a;
+  a.positions = {0, 0, 0};
+  for (int i = 0; i < 6; ++i) a.positions.insert(a.positions.end(), {std::cos(kPi * i / 3), std::sin(kPi * i / 3), i % 2 ? -0.8 : 0.8});
+  for (int i = 0; i < 6; ++i) a.triangles.insert(a.triangles.end(), {0, 1 + i, 1 + (i + 1) % 6});
+  return a;
+}
+
+TEST(StraightenerFlip, FreezesASaddleVertexThePathGoesStraightThrough) {
+  const TriMesh mesh = testing::build(saddle());
+  const int v = vertex_near(mesh, Vec3::Zero());
+  std::vector<int> fan;
+  bool closed;
+  vertex_fan(mesh, v, fan, closed);
+  ASSERT_EQ(fan.size(), 6u);
+  // The angle sum, and the strip's half: 3 faces around v between the centroids of the outer two.
+  double theta = 0;
+  for (int f : fan) theta += corner_angle(mesh, f, v);
+  const Vec3 r0(1, 0, 0.8), r1(0.5, std::sqrt(0.75), -0.8);
+  EXPECT_NEAR(theta, 6 * std::acos(r0.dot(r1) / r0.squaredNorm()), 1e-12);
+  EXPECT_GT(theta, 2 * kPi);
+  const std::vector<int> strip = {fan[0], fan[1], fan[2]};
+  const MeshPoint a = centroid(strip.front()), b = centroid(strip.back());
+  const Vec3 pa = eval_position(mesh, a), pb = eval_position(mesh, b), pv = mesh.positions[v];
+
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  s.begin(a, b, strip);
+  ASSERT_EQ(s.apices().size(), 3u);
+  ASSERT_EQ(s.apices()[1].vertex, v);
+  const double turn = turn_at(s.apices(), 1);
+  // The other side spans θ − (π + turn) ≥ π: the path through v is locally shortest.
+  ASSERT_GE(theta - kPi - turn, kPi);
+  int first, last;
+  ASSERT_TRUE(s.run_of(v, s.apices()[1].portal, first, last));
+  Flip flip;
+  EXPECT_FALSE(s.flip(1, turn, first, last, flip));
+  EXPECT_EQ(flip.other, (std::vector<int>{fan[5], fan[4], fan[3]}));
+
+  GeodesicPath path;
+  PathStats stats;
+  std::vector<int> in = strip;
+  s.straighten(a, b, in, path, &stats);
+  EXPECT_EQ(stats.frozen_vertices, 1);
+  EXPECT_EQ(stats.accepted_flips, 0);
+  EXPECT_EQ(path.strip, strip);
+  EXPECT_NEAR(path_length(mesh, path), (pv - pa).norm() + (pb - pv).norm(), 1e-12);
+}
+
+// ---- Zipper -------------------------------------------------------------------------------------
+
+TEST(StraightenerZipper, TakesInExactlyTheVerticesThatStillBlock) {
+  // A strip that runs just under row 12 of a 24 x 24 grid between ends just above it: the path
+  // bends down onto the row, runs along it and up again.
+  const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
+  const double cell = 1.0 / 24, row = 12 * cell;
+  const std::vector<int> strip = strip_through(
+      mesh, {at_xy(mesh, 0.1, row + 0.3 * cell), at_xy(mesh, 0.15, row - 0.3 * cell), at_xy(mesh, 0.85, row - 0.3 * cell),
+             at_xy(mesh, 0.9, row + 0.3 * cell)});
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  s.begin(at_xy(mesh, 0.1, row + 0.3 * cell), at_xy(mesh, 0.9, row + 0.3 * cell), strip);
+  const std::vector<Apex>& apices = s.apices();
+  ASSERT_GE(apices.size(), 3u);
+  const int v = apices[1].vertex;
+  ASSERT_GE(v, 0);
+  EXPECT_NEAR(mesh.positions[v].y(), row, 1e-12);
+
+  // Independently: the row vertices on v's side of the strip, strictly between apex 0 and apex 2
+  // (along x), that lie on v's side of the line between those apices, in strip order (left to right).
+  const Portal& own = s.unfolded().portals[apices[1].portal];
+  const bool v_left = own.left_vertex == v;
+  std::vector<int> boundary;  // the strip's vertices on v's side
+  for (const Portal& portal : s.unfolded().portals) boundary.push_back(v_left ? portal.left_vertex : portal.right_vertex);
+  auto on_boundary = [&](int w) { return std::find(boundary.begin(), boundary.end(), w) != boundary.end(); };
+  const MeshPoint a = at_xy(mesh, 0.1, row + 0.3 * cell), b = at_xy(mesh, 0.9, row + 0.3 * cell);
+  auto position_of = [&](const Apex& x, const MeshPoint& end) { return x.vertex >= 0 ? mesh.positions[x.vertex] : eval_position(mesh, end); };
+  const Vec3 from = position_of(apices[0], a), to = position_of(apices[2], b), pv = mesh.positions[v];
+  auto side = [&](const Vec3& w) { return orient(from.head<2>(), to.head<2>(), w.head<2>()); };
+  std::vector<std::pair<double, int>> row_vertices;
+  for (size_t w = 0; w < mesh.positions.size(); ++w) {
+    const Vec3& x = mesh.positions[w];
+    if (std::abs(x.y() - row) < 1e-12 && x.x() > from.x() && x.x() < to.x() && side(x) * side(pv) > 0 && on_boundary(static_cast<int>(w)))
+      row_vertices.emplace_back(x.x(), static_cast<int>(w));
+  }
+  std::sort(row_vertices.begin(), row_vertices.end());
+  std::vector<int> expected;
+  for (const auto& [x, w] : row_vertices) expected.push_back(w);
+  ASSERT_GT(expected.size(), 2u);
+
+  int first, last;
+  ASSERT_TRUE(s.run_of(v, apices[1].portal, first, last));
+  Flip flip;
+  ASSERT_TRUE(s.flip(1, turn_at(apices, 1), first, last, flip));
+  const size_t semi_star = flip.other.size();
+  s.zipper(1, flip);
+  EXPECT_TRUE(flip.chain);
+  EXPECT_EQ(s.zipper_pivots(), expected);
+
+  EXPECT_GT(flip.other.size(), semi_star);
+  // Made, the path no longer touches any of them and is shorter.
+  std::vector<int> out;
+  UnfoldedStrip u;
+  Splice splice;
+  s.apply({&flip}, out, u, splice);
+  expect_strip(mesh, out);
+  expect_fresh_layout(mesh, out, u);
+  std::vector<Apex> raw, after;
+  EXPECT_LT(s.shorten(u, raw, after, splice.path ? &splice : nullptr), s.length() - 1e-6);
+  for (const Apex& x : after) EXPECT_EQ(std::find(expected.begin(), expected.end(), x.vertex), expected.end()) << x.vertex;
+}
+
+// ---- Chord --------------------------------------------------------------------------------------
+
+// The faces the open segment a -> b of the plane z = 0 crosses, in the order it enters them.
+std::vector<int> faces_crossed(const TriMesh& mesh, const Vec2& a, const Vec2& b) {
+  std::vector<std::pair<double, int>> hit;
+  const Vec2 d = b - a;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    Vec2 c[3];
+    for (int k = 0; k < 3; ++k) c[k] = mesh.positions[mesh.triangles[f][k]].head<2>();
+    if (orient(c[0], c[1], c[2]) < 0) std::swap(c[1], c[2]);
+    double t0 = 0, t1 = 1;  // clipped against each edge's inner half-plane
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 &p = c[k], &q = c[(k + 1) % 3];
+      const double at0 = orient(p, q, a), slope = cross(q - p, d);  // inside: at0 + t * slope > 0
+      if (slope == 0) {
+        if (at0 <= 0) t1 = -1;
+      } else if (slope > 0) {
+        t0 = std::max(t0, -at0 / slope);
+      } else {
+        t1 = std::min(t1, -at0 / slope);
+      }
+    }
+    if (t1 - t0 > 1e-9) hit.emplace_back(t0, static_cast<int>(f));
+  }
+  std::sort(hit.begin(), hit.end());
+  std::vector<int> out;
+  for (const auto& [t, f] : hit) out.push_back(f);
+  return out;
+}
+
+TEST(StraightenerChord, LaysTheFacesTheStraightLineCrosses) {
+  // A strip that dips far below the segment between its ends; the chord at one of its bends
+  // replaces the strip between the neighbouring apices by the faces along the line between them.
+  const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
+  const MeshPoint a = at_xy(mesh, 0.1, 0.8), b = at_xy(mesh, 0.9, 0.8);
+  const std::vector<int> strip = strip_through(mesh, {a, at_xy(mesh, 0.51, 0.13), b});
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  s.begin(a, b, strip);
+  const std::vector<Apex>& apices = s.apices();
+  ASSERT_GE(apices.size(), 3u);
+  // (the apex whose neighbours lie farthest apart: the longest chord)
+  auto span = [&](size_t i) { return (apices[i + 1].pos - apices[i - 1].pos).norm(); };
+  size_t j = 1;
+  for (size_t i = 2; i + 1 < apices.size(); ++i)
+    if (span(i) > span(j)) j = i;
+  const int n = static_cast<int>(strip.size());
+  ChordRoom room{0, n - 1, n - 1};
+  int unused;
+  if (apices[j - 1].vertex >= 0) {
+    ASSERT_TRUE(s.run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused));
+  }
+  if (apices[j + 1].vertex >= 0) {
+    ASSERT_TRUE(s.run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last));
+  }
+  int first, last;
+  ASSERT_TRUE(s.run_of(apices[j].vertex, apices[j].portal, first, last));
+  Flip flip;
+  ASSERT_TRUE(s.flip(j, turn_at(apices, j), first, last, flip));
+  ASSERT_TRUE(s.chord(j, room, flip));
+  EXPECT_TRUE(flip.chord);
+  ASSERT_EQ(flip.laid.size(), flip.other.size());
+
+  // The line in space (the mesh is the plane z = 0): from apex j-1 to apex j+1.
+  auto place = [&](const Apex& x, const MeshPoint& end) -> Vec2 {
+    const Vec3 at = x.vertex >= 0 ? mesh.positions[x.vertex] : eval_position(mesh, end);
+    return at.head<2>();
+  };
+  const Vec2 p = place(apices[j - 1], a), q = place(apices[j + 1], b);
+  // Its faces but those around p and q (the chord turns around them to the strip) and those the
+  // strip keeps at either end: the chord's new faces, in order.
+  std::vector<int> expected;
+  for (int f : faces_crossed(mesh, p, q)) {
+    if ((apices[j - 1].vertex >= 0 && contains_vertex(mesh, f, apices[j - 1].vertex)) ||
+        (apices[j + 1].vertex >= 0 && contains_vertex(mesh, f, apices[j + 1].vertex)))
+      continue;
+    if (f == strip[flip.first] || f == strip[flip.last]) continue;
+    expected.push_back(f);
+  }
+  std::vector<int> along;
+  for (int f : flip.other)
+    if (!(apices[j - 1].vertex >= 0 && contains_vertex(mesh, f, apices[j - 1].vertex)) &&
+        !(apices[j + 1].vertex >= 0 && contains_vertex(mesh, f, apices[j + 1].vertex)))
+      along.push_back(f);
+  ASSERT_GT(expected.size(), 10u);
+  EXPECT_EQ(along, expected);
+  // Where the walk laid them is where the strip's layout puts them: made, the layout is a fresh one.
+  std::vector<int> out;
+  UnfoldedStrip u;
+  Splice splice;
+  s.apply({&flip}, out, u, splice);
+  expect_strip(mesh, out);
+  expect_fresh_layout(mesh, out, u);
+  std::vector<Apex> raw, after;
+  // The path can run straight from p to q now: it is shorter by at least what the bend at v cost.
+  const double bend = (apices[j].pos - apices[j - 1].pos).norm() + (apices[j + 1].pos - apices[j].pos).norm() -
+                      (apices[j + 1].pos - apices[j - 1].pos).norm();
+  ASSERT_GT(bend, 1e-5);
+  EXPECT_LE(s.shorten(u, raw, after, splice.path ? &splice : nullptr), s.length() - bend + 1e-12);
+}
+
+// ---- Apply --------------------------------------------------------------------------------------
+
+TEST(StraightenerApply, MakesSeveralFlipsAtOnceAsAFreshLayoutWould) {
+  // The zipper's strip: the path bends at two row vertices far apart; their semi-stars are made in
+  // one go, each piece of the strip between them moved rigidly.
+  const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
+  const double cell = 1.0 / 24, row = 12 * cell;
+  const MeshPoint a = at_xy(mesh, 0.1, row + 0.3 * cell), b = at_xy(mesh, 0.9, row + 0.3 * cell);
+  const std::vector<int> strip = strip_through(mesh, {a, at_xy(mesh, 0.15, row - 0.3 * cell), at_xy(mesh, 0.85, row - 0.3 * cell), b});
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  s.begin(a, b, strip);
+  const std::vector<Apex>& apices = s.apices();
+  ASSERT_EQ(apices.size(), 4u);
+  Flip flips[2];
+  for (size_t j = 1; j <= 2; ++j) {
+    int first, last;
+    ASSERT_TRUE(s.run_of(apices[j].vertex, apices[j].portal, first, last));
+    ASSERT_TRUE(s.flip(j, turn_at(apices, j), first, last, flips[j - 1]));
+  }
+  ASSERT_LT(flips[0].last + 1, flips[1].first);  // they do not touch
+  std::vector<int> out;
+  UnfoldedStrip u;
+  Splice splice;
+  s.apply({&flips[0], &flips[1]}, out, u, splice);
+  // The strip with both runs replaced, nothing else changed.
+  std::vector<int> expected(strip.begin(), strip.begin() + flips[0].first + 1);
+  expected.insert(expected.end(), flips[0].other.begin(), flips[0].other.end());
+  expected.insert(expected.end(), strip.begin() + flips[0].last, strip.begin() + flips[1].first + 1);
+  expected.insert(expected.end(), flips[1].other.begin(), flips[1].other.end());
+  expected.insert(expected.end(), strip.begin() + flips[1].last, strip.end());
+  EXPECT_EQ(out, expected);
+  expect_strip(mesh, out);
+  expect_fresh_layout(mesh, out, u);
+  ASSERT_NE(splice.path, nullptr);
+  // The funnel taking up the known path where the strips agree finds what it finds from scratch.
+  std::vector<Apex> raw, spliced, fresh_raw, fresh;
+  const double with = s.shorten(u, raw, spliced, &splice), without = s.shorten(u, fresh_raw, fresh, nullptr);
+  EXPECT_NEAR(with, without, 1e-12);
+  ASSERT_EQ(spliced.size(), fresh.size());
+  for (size_t i = 0; i < fresh.size(); ++i) EXPECT_EQ(spliced[i].vertex, fresh[i].vertex);
+  EXPECT_LT(with, s.length());
+}
+
+// ---- Passes -------------------------------------------------------------------------------------
+
+TEST(StraightenerPass, OnePassStraightensAFlatVertexAndTheNextFindsNothing) {
+  const TriMesh mesh = testing::build(testing::planar_grid(4, 1, 0));
+  const int v = vertex_near(mesh, {0.5, 0.5, 0});
+  std::vector<int> fan;
+  bool closed;
+  vertex_fan(mesh, v, fan, closed);
+  const std::vector<int> strip(fan.begin(), fan.begin() + 6);
+  const MeshPoint a = centroid(strip.front()), b = centroid(strip.back());
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  s.begin(a, b, strip);
+  PathStats stats;
+  EXPECT_TRUE(s.pass(&stats));
+  EXPECT_EQ(stats.accepted_flips, 1);
+  EXPECT_NEAR(s.length(), (eval_position(mesh, b) - eval_position(mesh, a)).norm(), 1e-12);
+  EXPECT_EQ(s.strip(), (std::vector<int>{fan[0], fan[7], fan[6], fan[5]}));
+  EXPECT_FALSE(s.pass(&stats));
+  EXPECT_EQ(stats.accepted_flips, 1);
+  EXPECT_EQ(stats.frozen_vertices, 0);
+  EXPECT_TRUE(std::all_of(marks.begin(), marks.end(), [](int m) { return m == -1; }));  // lent back clean
+}
+
+TEST(StraightenerPass, MaxPassesCountsPasses) {
+  // straighten with max_passes = k is begin and k passes: the same strip and length.
+  const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
+  const MeshPoint a = at_xy(mesh, 0.1, 0.8), b = at_xy(mesh, 0.9, 0.8);
+  const std::vector<int> strip = strip_through(mesh, {a, at_xy(mesh, 0.51, 0.13), b});
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  double first_length = 0;
+  for (int k = 1; k <= 4; ++k) {
+    ShortestPathOptions options;
+    options.chords = false;  // (semi-stars and zippers: many passes to go)
+    options.max_passes = k;
+    Straightener whole(mesh, marks, options), steps(mesh, marks, options);
+    std::vector<int> in = strip;
+    GeodesicPath path;
+    whole.straighten(a, b, in, path);
+    EXPECT_EQ(in, path.strip);
+    steps.begin(path.start, path.end, strip);
+    for (int i = 0; i < k; ++i) {
+      const bool more = steps.pass();
+      ASSERT_TRUE(more || i >= 2) << "pass " << i;  // (the first two have work to do)
+      if (!more) break;
+    }
+    EXPECT_EQ(path.strip, steps.strip()) << k << " passes";
+    EXPECT_EQ(whole.length(), steps.length()) << k << " passes";
+    if (k == 1) first_length = whole.length();
+  }
+  // (more passes did more: the bound was what stopped them)
+  Straightener unbounded(mesh, marks);
+  std::vector<int> in = strip;
+  GeodesicPath path;
+  unbounded.straighten(a, b, in, path);
+  EXPECT_LT(unbounded.length(), first_length - 1e-6);
+}
+
+}  // namespace
+}  // namespace splinekit::surface

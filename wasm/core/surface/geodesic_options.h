@@ -1,0 +1,33 @@
+// The options and counters of locally shortest paths (geodesic.h): what each phase reads and what
+// it counts. Defaults and the measurements behind them: BENCHMARKS.md, "Why these defaults".
+#pragma once
+
+namespace splinekit::surface {
+
+// Which graph phase (i) searches. kRefined (face and edge nodes, the queue drained under the A*
+// bound) finds the strip of the globally shortest path far more often; kDual (face nodes only,
+// stopping at the first arrival, as in the paper) is several times cheaper and is what curve
+// tracing uses, where most paths are short and start from nearby points.
+enum class SearchGraph { kRefined, kDual };
+
+struct ShortestPathOptions {
+  // ---- Phase (iii), the straightening (straighten.h) ----
+  bool straighten = true;          // run phase (iii) at all (else the funnel path of the initial strip)
+  bool chords = true;              // flips along the line between apices (else semi-stars and zippers only)
+  double chord_min_turn = 0.01;    // radians: a chord only where the path turns by more (else a semi-star)
+  int max_passes = 100000;         // safety bound on phase (iii)'s passes (each flips several vertices)
+  // ---- Phase (i), the search (dual_search.h) ----
+  double long_edge_fraction = 0.01;  // edges longer than this fraction of the bounding-box diagonal
+                                     // get one graph node per such length
+  int steiner = 4;                   // graph nodes on every edge
+  double dual_heuristic_weight = 3;  // weight of the A* Euclidean term in the kDual search
+};
+
+// Counters for tests and benchmarks, summed over the calls they are passed to.
+struct PathStats {
+  int visited_nodes = 0;    // phase (i): graph nodes taken from the queue and expanded
+  int accepted_flips = 0;   // phase (iii): flips (semi-star, zipper or chord) kept because they shortened the path
+  int frozen_vertices = 0;  // phase (iii): vertices found locally shortest (or not flippable) and frozen
+};
+
+}  // namespace splinekit::surface

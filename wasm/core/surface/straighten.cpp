@@ -1,0 +1,480 @@
+#include "surface/straighten.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace splinekit::surface {
+
+double corner_angle(const TriMesh& mesh, int face, int v) {
+  const auto& t = mesh.triangles[face];
+  const int k = corner_of(mesh, face, v);
+  const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[v], b = mesh.positions[t[(k + 2) % 3]] - mesh.positions[v];
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+Straightener::Straightener(const TriMesh& mesh, std::vector<int>& face_marks, const ShortestPathOptions& options)
+    : options(options), mesh_(mesh), face_marks_(face_marks) {
+  angle_sums_.assign(mesh.positions.size(), std::numeric_limits<double>::quiet_NaN());
+}
+
+// =================================================================================================
+// The whole straightening
+// =================================================================================================
+
+void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
+                              PathStats* stats) {
+  path.strip = strip;
+  point_in_face(mesh_, a, strip.front(), path.start);
+  point_in_face(mesh_, b, strip.back(), path.end);
+  path.lerps.clear();
+  path.arc.clear();
+  if (strip.size() == 1) return;
+  begin(path.start, path.end, strip);
+  for (int passes = 0; options.straighten && passes < options.max_passes; ++passes)
+    if (!pass(stats)) break;
+  // Crossings of the final strip.
+  crossings(unfolded_, apices_, path.lerps, path.arc);
+  strip.assign(strip_.begin(), strip_.end());
+  path.strip = strip_;
+}
+
+void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip) {
+  start_ = start, end_ = end;
+  strip_.assign(strip.begin(), strip.end());
+  frozen_.clear(), no_chain_.clear(), no_chord_.clear();
+  unfold_strip(mesh_, strip_, unfolded_);
+  length_ = shorten(unfolded_, made_, apices_, nullptr);
+}
+
+double Straightener::shorten(const UnfoldedStrip& u, std::vector<Apex>& raw, std::vector<Apex>& out,
+                             const Splice* splice) const {
+  funnel(u, u.map(0, start_), u.map(static_cast<int>(u.faces.size()) - 1, end_), raw, splice);
+  out.assign(raw.begin(), raw.end());
+  drop_straight(out);
+  return polyline_length(out);
+}
+
+// =================================================================================================
+// Queries
+// =================================================================================================
+
+bool Straightener::run_of(int v, int at, int& first, int& last) const {
+  const int n = static_cast<int>(strip_.size());
+  first = last = std::clamp(at, 0, n - 1);
+  if (!contains_vertex(mesh_, strip_[first], v)) return false;
+  while (first > 0 && contains_vertex(mesh_, strip_[first - 1], v)) --first;
+  while (last + 1 < n && contains_vertex(mesh_, strip_[last + 1], v)) ++last;
+  return true;
+}
+
+bool Straightener::on_left(const Apex& x) const {
+  return unfolded_.portals[std::clamp(x.portal, 0, static_cast<int>(unfolded_.portals.size()) - 1)].left_vertex == x.vertex;
+}
+
+bool Straightener::overlaps(int first, int last) const {
+  return std::any_of(flips_.begin(), flips_.begin() + used_, [&](const Flip& f) { return first <= f.last + 1 && f.first <= last + 1; });
+}
+
+bool Straightener::is_frozen(int v) const { return std::find(frozen_.begin(), frozen_.end(), v) != frozen_.end(); }
+
+void Straightener::freeze(int v, PathStats* stats) {
+  frozen_.push_back(v);
+  if (stats) ++stats->frozen_vertices;
+}
+
+// =================================================================================================
+// The pass
+// =================================================================================================
+
+bool Straightener::pass(PathStats* stats) {
+  const int n = static_cast<int>(strip_.size());
+  // Every removable reflex vertex, largest turn first, with runs that do not touch each other.
+  order_.clear();
+  for (size_t j = 1; j + 1 < apices_.size(); ++j) {
+    if (apices_[j].vertex < 0 || is_frozen(apices_[j].vertex)) continue;
+    const double turn = turn_at(apices_, j);
+    if (turn > 1e-9) order_.emplace_back(-turn, j);
+  }
+  if (order_.empty()) return false;
+  std::sort(order_.begin(), order_.end());
+  used_ = 0;
+  for (const auto& [neg_turn, j] : order_) {
+    // A vertex whose faces a flip of this pass already changes cannot flip in it; it is only
+    // frozen (as `flip` would) if the path through it is locally shortest.
+    int run_first, run_last;
+    const int v = apices_[j].vertex;
+    const bool in_strip = run_of(v, apices_[j].portal, run_first, run_last);
+    const bool blocked = in_strip && used_ > 0 && overlaps(run_first, run_last);
+    if (blocked && !std::isnan(angle_sums_[v])) {
+      if (straight_through(v, -neg_turn)) freeze(v, stats);
+      continue;
+    }
+    if (used_ == flips_.size()) flips_.emplace_back();
+    Flip& made = flips_[used_];
+    if (!in_strip || !flip(j, -neg_turn, run_first, run_last, made)) {
+      freeze(apices_[j].vertex, stats);
+      continue;
+    }
+    if (blocked) continue;
+    // A chord spans the faces around the neighbouring apices: look for room before tracing it.
+    ChordRoom room{0, n - 1, n - 1};
+    int unused;
+    const bool fits = options.chords && -neg_turn > options.chord_min_turn &&
+                      (apices_[j - 1].vertex < 0 || run_of(apices_[j - 1].vertex, apices_[j - 1].portal, room.p_first, unused)) &&
+                      (apices_[j + 1].vertex < 0 || run_of(apices_[j + 1].vertex, apices_[j + 1].portal, room.q_first, room.q_last)) &&
+                      !overlaps(room.p_first, room.q_last);
+    if (!fits || std::find(no_chord_.begin(), no_chord_.end(), made.vertex) != no_chord_.end() || !chord(j, room, made))
+      zipper(j, made);
+    if (!overlaps(made.first, made.last)) ++used_;
+  }
+  if (used_ == 0) return true;  // all frozen this pass; the next pass finds nothing new
+  chosen_.clear();
+  for (size_t i = 0; i < used_; ++i) chosen_.push_back(&flips_[i]);
+  std::sort(chosen_.begin(), chosen_.end(), [](const Flip* x, const Flip* y) { return x->first < y->first; });
+  Splice splice;
+  apply(chosen_, trial_, trial_unfolded_, splice);
+  double trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
+  if (!(trial_length < length_ - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
+    // Together they did not shorten the path: fall back to the largest turn alone.
+    const Flip* best = *std::max_element(chosen_.begin(), chosen_.end(), [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
+    chosen_.assign(1, best);
+    apply(chosen_, trial_, trial_unfolded_, splice);
+    trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
+  }
+  if (trial_length < length_ - 1e-12 * mesh_.scale) {
+    strip_.swap(trial_);
+    std::swap(unfolded_, trial_unfolded_);
+    apices_.swap(trial_apices_);
+    made_.swap(trial_made_);
+    length_ = trial_length;
+    if (stats) stats->accepted_flips += static_cast<int>(chosen_.size());
+  } else {
+    for (const Flip* f : chosen_) {
+      if (f->chord) {
+        no_chord_.push_back(f->vertex);
+      } else if (f->chain) {
+        no_chain_.push_back(f->vertex);
+      } else {
+        freeze(f->vertex, stats);
+      }
+    }
+  }
+  return true;
+}
+
+// =================================================================================================
+// Semi-star
+// =================================================================================================
+
+bool Straightener::flip(size_t j, double turn, int first, int last, Flip& flip) {
+  const int v = apices_[j].vertex;
+  flip.vertex = v;
+  flip.turn = turn;
+  flip.chain = flip.chord = false;
+  flip.laid.clear();
+  if (straight_through(v, turn)) return false;
+  const int f0 = strip_[first];
+  // The run turns around v keeping it on its left or right; the other semi-star the other way.
+  const bool run_left = first < last && mesh_.adjacency[f0][edge_around(mesh_, f0, v, true)] == strip_[first + 1];
+  flip.first = first, flip.last = last;
+  flip.other.clear();
+  for (int f = f0, steps = 0; steps < 4096; ++steps) {
+    f = mesh_.adjacency[f][edge_around(mesh_, f, v, !run_left)];
+    if (f < 0) return false;
+    if (f == strip_[last]) break;
+    flip.other.push_back(f);
+  }
+  double& angle_sum = angle_sums_[v];  // the whole fan: the run and the other side
+  if (std::isnan(angle_sum)) {
+    angle_sum = 0;
+    for (int i = first; i <= last; ++i) angle_sum += corner_angle(mesh_, strip_[i], v);
+    for (int f : flip.other) angle_sum += corner_angle(mesh_, f, v);
+  }
+  return !straight_through(v, turn);
+}
+
+// =================================================================================================
+// Zipper
+// =================================================================================================
+
+// A path that runs along a line of mesh vertices on the wrong side of it bends at one of them, v;
+// flipping v alone moves the bend to the next vertex of the line, one pass per vertex. The zipper
+// replaces the strip faces around all the blocking vertices by the faces on their other side; the
+// pass keeps it only if the path gets shorter, otherwise v gets the single flip from then on
+// (no_chain_).
+void Straightener::zipper(size_t j, Flip& flip) {
+  const int v = apices_[j].vertex, n = static_cast<int>(strip_.size());
+  if (n < 3 || std::find(no_chain_.begin(), no_chain_.end(), v) != no_chain_.end()) return;
+  const Portal& own = unfolded_.portals[std::clamp(apices_[j].portal, 0, n - 2)];
+  const bool left = own.left_vertex == v;
+  if (!left && own.right_vertex != v) return;
+  auto side_vertex = [&](int i) { return left ? unfolded_.portals[i].left_vertex : unfolded_.portals[i].right_vertex; };
+  const Vec2 &from = apices_[j - 1].pos, &to = apices_[j + 1].pos;
+  const bool v_right = orient(from, to, apices_[j].pos) < 0;
+  auto blocks = [&](int i) {  // the side vertex of portal i
+    const double o = orient(from, to, left ? unfolded_.left(i) : unfolded_.right(i));
+    return v_right ? o < 0 : o > 0;
+  };
+  int first = flip.first, last = flip.last;
+  pivots_.clear();
+  for (int i = first - 1; i > apices_[j - 1].portal && blocks(i);) {  // vertices before v, nearest first
+    const int c = side_vertex(i);
+    while (i > apices_[j - 1].portal + 1 && side_vertex(i - 1) == c) --i;
+    pivots_.push_back(c);
+    first = i--;
+  }
+  std::reverse(pivots_.begin(), pivots_.end());  // in strip order
+  pivots_.push_back(v);
+  for (int i = last; i < std::min(n - 1, apices_[j + 1].portal) && blocks(i);) {  // vertices after v
+    const int c = side_vertex(i);
+    while (i + 1 < n - 1 && side_vertex(i + 1) == c) ++i;
+    pivots_.push_back(c);
+    last = ++i;
+  }
+  if (pivots_.size() == 1) return;
+  // Around each pivot in turn on the side away from the strip, from strip[first] to strip[last].
+  // `entry`: the other end of the edge the walk came through (the edge not to cross back over).
+  auto around = [&](int f, int pivot, int entry, int& next_entry) {
+    const auto& t = mesh_.triangles[f];
+    const int k = corner_of(mesh_, f, pivot);
+    if (t[(k + 1) % 3] != entry) return next_entry = t[(k + 1) % 3], mesh_.adjacency[f][k];
+    return next_entry = t[(k + 2) % 3], mesh_.adjacency[f][(k + 2) % 3];
+  };
+  const int p0 = pivots_[0];
+  int entry = pivots_[1];
+  if (contains_vertex(mesh_, strip_[first + 1], p0)) {
+    const Portal& shared = unfolded_.portals[first];
+    entry = shared.left_vertex == p0 ? shared.right_vertex : shared.left_vertex;
+  }
+  std::vector<int>& other = zipper_faces_;
+  other.clear();
+  size_t at = 0;
+  int f = around(strip_[first], p0, entry, entry);
+  for (int steps = 0;; ++steps) {
+    if (f < 0 || steps > 256) return;
+    if (at + 1 == pivots_.size()) {
+      if (f == strip_[last]) break;
+    } else if (f == strip_[last]) {
+      return;
+    } else if (contains_vertex(mesh_, f, pivots_[at + 1])) {
+      other.push_back(f);
+      f = around(f, pivots_[at + 1], pivots_[at], entry);
+      ++at;
+      continue;
+    }
+    other.push_back(f);
+    f = around(f, pivots_[at], entry, entry);
+  }
+  flip.first = first, flip.last = last;
+  flip.other.swap(other);
+  flip.chain = true;
+}
+
+// =================================================================================================
+// Chord
+// =================================================================================================
+
+// A long path first found on the dual graph lies rows of vertices away from the geodesic, and
+// semi-star flips move it across one row at a time. So the chord of apex j takes the straight line
+// from the neighbouring apex p to the other one, q, in the plane of the strip, and follows it across
+// the mesh from p, laying each face it enters flat (a straightest geodesic from p aimed at q), until
+// a face holds q. Where the surface between turned the line, it aims once more at where those faces
+// put q, or, when the line passed q without meeting it, at where q projects into the plane of the
+// face where it did (a long chord over a curved region drifts by more than a face); the second walk
+// keeps the first as far as the new line crosses the same edges. The strip then runs around p from
+// its faces there to the line, along the line, and around q (on the side the line passes it) to its
+// faces there. When the chord fails the pass makes the zipper or semi-star instead; so it does from
+// then on for a vertex whose chord did not shorten the path (no_chord_).
+bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
+  const int n = static_cast<int>(strip_.size());
+  const Apex &p = apices_[j - 1], &q = apices_[j + 1];
+  const Vec2 o = p.pos;
+  Vec2 d = q.pos - p.pos;
+  auto side = [&](const Vec2& c) { return cross(d, c - o); };  // > 0: left of the line
+  // The walk: the faces it entered and where it laid them, how many of them it entered turning
+  // around p, and the edge it left each face by along the line.
+  std::vector<int>& other = walk_faces_;
+  std::vector<std::array<Vec2, 3>>& laid = walk_laid_;
+  std::vector<int8_t>& exits = walk_exits_;
+  size_t around = 0;
+  int first = 0, f = strip_[0];
+  int on_strip = 0;  // strip index of f while the walk follows the strip (its layout is known), else -1
+  std::array<Vec2, 3> cf, cg;
+  // Where the walk is on the strip after entering face g from strip face `at` (-1: off it).
+  auto follow_strip = [&](int at, int g) { return at >= 0 && at + 1 < n && strip_[at + 1] == g ? at + 1 : -1; };
+  auto step = [&](int e) {  // into the face across edge e of f
+    const int g = mesh_.adjacency[f][e];
+    if (g < 0) return false;
+    on_strip = follow_strip(on_strip, g);
+    if (on_strip >= 0) {
+      cf = unfolded_.corners[on_strip];
+    } else {
+      lay_across(mesh_, f, e, cf, cg);
+      cf = cg;
+    }
+    f = g;
+    other.push_back(f);
+    laid.push_back(cf);
+    return true;
+  };
+  // From p along direction d until a face holds q (the end face for the end point): kReached, and
+  // q's place in the plane there. When the line passes q without meeting it, kPassed, and q's
+  // place estimated from the face where it did: the point of that face's plane nearest to q, laid
+  // with the face (exact for q on the face, off by the surface's turning between them otherwise).
+  enum Trace { kFailed, kReached, kPassed };
+  Vec2 at;
+  auto passed = [&]() {
+    const Vec3 x = q.vertex >= 0 ? mesh_.positions[q.vertex] : eval_position(mesh_, end_);
+    return lay_point(mesh_, f, cf, x, at) ? kPassed : kFailed;
+  };
+  // Whether the line leaves p through face g laid at c (its corner at p holds the line).
+  auto leaves_p = [&](int g, const std::array<Vec2, 3>& c) {
+    const int k = corner_of(mesh_, g, p.vertex);
+    return side(c[(k + 1) % 3]) < 0 && side(c[(k + 2) % 3]) > 0;
+  };
+  // Around p, on from its first strip face, to the face whose corner holds the line.
+  auto turn_around_p = [&]() {
+    other.clear(), laid.clear(), exits.clear();
+    first = 0, f = strip_[0], on_strip = 0;
+    cf = unfolded_.corners[0];
+    if (p.vertex >= 0) {
+      first = room.p_first;
+      const bool left = on_left(p);
+      f = strip_[first];
+      cf = unfolded_.corners[first];
+      on_strip = first;
+      for (int steps = 0; !leaves_p(f, cf); ++steps) {
+        if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == strip_[first]) return false;
+      }
+    }
+    around = other.size();
+    return true;
+  };
+  // Along the line, a face laid at c is left through the edge from a corner on the line's right
+  // to one on its left (-1: none, the line meets a corner); the line is past q when both ends of
+  // that edge lie beyond q along it.
+  auto exit_edge = [&](const std::array<Vec2, 3>& c) {
+    const double sides[3] = {side(c[0]), side(c[1]), side(c[2])};
+    int e = -1;
+    for (int k = 0; k < 3; ++k)
+      if (sides[k] < 0 && sides[(k + 1) % 3] > 0) e = k;
+    return e;
+  };
+  auto past_q = [&](const std::array<Vec2, 3>& c, int e) {
+    const double reach = 1.05 * d.squaredNorm();
+    return (c[e] - o).dot(d) > reach && (c[(e + 1) % 3] - o).dot(d) > reach;
+  };
+  // Along the line from f on.
+  auto along = [&]() {
+    for (size_t steps = exits.size(); q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip_.back(); ++steps) {
+      const int e = exit_edge(cf);
+      if (e < 0 || steps > 4 * static_cast<size_t>(n)) return kFailed;
+      if (past_q(cf, e)) return passed();
+      exits.push_back(static_cast<int8_t>(e));
+      if (!step(e)) return kFailed;
+    }
+    at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)] : on_face(cf, end_);
+    return kReached;
+  };
+  // The walk along a new d: as far as it takes the same way as the last one (the same turn around
+  // p, the same exits from the same faces, laid alike), the last one's; on from where they part.
+  auto walk_again = [&]() {
+    const std::array<Vec2, 3>* c = &unfolded_.corners[first];
+    size_t s = 0;
+    if (p.vertex >= 0) {
+      for (int g = strip_[first];; ++s) {
+        const bool holds = leaves_p(g, *c);
+        if (s == around && holds) break;
+        if (s == around || holds) return turn_around_p() ? along() : kFailed;
+        g = other[s], c = &laid[s];
+      }
+    }
+    size_t m = 0;
+    for (; m < exits.size() && exit_edge(*c) == exits[m] && !past_q(*c, exits[m]); ++m) c = &laid[s++];
+    cf = *c;
+    other.resize(s), laid.resize(s), exits.resize(m);
+    f = s == 0 ? strip_[first] : other[s - 1];
+    on_strip = first;
+    for (int g : other) on_strip = follow_strip(on_strip, g);
+    return along();
+  };
+  Trace traced = turn_around_p() ? along() : kFailed;
+  // The surface between turned the line: aim again where the line's faces put q (once).
+  if (traced == kPassed || (traced == kReached && std::abs(cross(d, at - o)) > 1e-3 * d.squaredNorm())) {
+    if (!((at - o).squaredNorm() > 0)) return false;
+    d = at - o;
+    traced = walk_again();
+  }
+  if (traced != kReached) return false;
+  // The path from p to q through the line's faces is at least |at - o| long, so the chord cannot
+  // help unless that beats the way by v.
+  if ((at - o).norm() >= (apices_[j].pos - p.pos).norm() + (q.pos - apices_[j].pos).norm()) return false;
+  int last = n - 1;
+  if (q.vertex >= 0) {  // around q, on the side the line passes it, to its strip faces
+    const bool left = side(at) > 0;
+    for (int steps = 0;; ++steps) {
+      int m = room.q_first;
+      while (m <= room.q_last && strip_[m] != f) ++m;
+      if (m <= room.q_last) {
+        last = m;
+        break;
+      }
+      if (steps > 64 || !step(edge_around(mesh_, f, q.vertex, left))) return false;
+    }
+  }
+  if (!other.empty() && other.back() == strip_[last]) other.pop_back(), laid.pop_back();
+  if (last <= first) return false;
+  flip.first = first, flip.last = last;
+  flip.other.swap(other);  // (the walk's buffers are scratch: the next walk clears them)
+  flip.laid.swap(laid);
+  flip.chord = true;
+  return true;
+}
+
+// =================================================================================================
+// Apply
+// =================================================================================================
+
+void Straightener::apply(const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u, Splice& splice) {
+  u.faces.clear(), u.corners.clear(), u.portals.clear();
+  splice.path = &made_;
+  splice.lo = chosen.front()->first;
+  append_moved(u, unfolded_, 0, chosen.front()->first + 1, PlaneMotion{});
+  PlaneMotion moved;
+  for (size_t i = 0; i < chosen.size(); ++i) {
+    const Flip& f = *chosen[i];
+    if (f.chord) {
+      const size_t joint = u.faces.size();
+      for (size_t k = 0; k < f.other.size(); ++k) append_face(mesh_, u, f.other[k], moved(f.laid[k]));
+      join(mesh_, u, joint);
+    } else {
+      for (int face : f.other) append_laid(mesh_, u, face);
+    }
+    append_laid(mesh_, u, strip_[f.last]);
+    moved = PlaneMotion::between(unfolded_.corners[f.last], u.corners.back());
+    splice.hi = static_cast<int>(u.faces.size()) - 1;
+    splice.shift = f.last - splice.hi;
+    splice.motion = moved;
+    const size_t next = i + 1 < chosen.size() ? chosen[i + 1]->first + 1 : strip_.size(), joint = u.faces.size();
+    append_moved(u, unfolded_, f.last + 1, next, moved);
+    join(mesh_, u, joint);
+  }
+  out.assign(u.faces.begin(), u.faces.end());
+  // A new face may also be one the strip keeps elsewhere (or another flip's): then the strip has a
+  // loop to cut, and the faces after it are laid anew.
+  constexpr int kNew = -2;
+  size_t added = 0, seen = 0;
+  bool repeated = false;
+  for (const Flip* f : chosen)
+    for (int face : f->other) repeated |= face_marks_[face] == kNew, face_marks_[face] = kNew, ++added;
+  for (int face : out) seen += face_marks_[face] == kNew;
+  for (const Flip* f : chosen)
+    for (int face : f->other) face_marks_[face] = -1;
+  if (repeated || seen != added) {
+    splice.path = nullptr;
+    remove_loops(out, face_marks_);
+    unfold_strip(mesh_, out, u, &unfolded_);
+  }
+}
+
+}  // namespace splinekit::surface

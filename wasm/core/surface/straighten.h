@@ -1,0 +1,173 @@
+// Phase (iii) of a locally shortest path: straightening a strip of faces by flips at the reflex
+// vertices of its funnel path, after
+//   - Xin & Wang, "Efficiently determining a locally exact shortest path on polyhedral surfaces",
+//     Computer-Aided Design 39(12), 2007: the vertex where the path bends has its semi-star in the
+//     strip replaced by its other semi-star; if the path does not get shorter the vertex is frozen;
+//   - Mancinelli, Nazzaro, Pellacini, Puppo, "b/Surf: interactive Bézier splines on surface meshes",
+//     §5.1 "Point-to-point shortest path", which starts it from the funnel path (funnel.h) of a strip
+//     found on the dual graph (dual_search.h).
+// Three kinds of flip, each a named step below: the semi-star (`flip`), the zipper (`zipper`: the
+// semi-stars of a line of boundary vertices that would still block the path, at once) and the
+// chord (`chord`: the faces along the straight line between the neighbouring apices, which crosses
+// many rows of vertices at once). A pass (`pass`) flips every reflex vertex whose faces do not touch
+// another's and keeps the flips (`apply`) if the path gets shorter. The straightening ends when no
+// reflex vertex is left unfrozen, or after options.max_passes passes.
+//
+// A Straightener belongs to one mesh; its scratch (strips, layouts, funnel paths, flips) is kept
+// between paths, so after warm-up a path allocates nothing but what its result needs.
+#pragma once
+
+#include "surface/funnel.h"
+#include "surface/geodesic_options.h"
+#include "surface/path.h"
+#include "surface/unfold.h"
+
+#include <array>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace splinekit::surface {
+
+// ---- Vertex stars -------------------------------------------------------------------------------
+
+// Whether `face` has vertex v among its corners.
+inline bool contains_vertex(const TriMesh& mesh, int face, int v) { return corner_of(mesh, face, v) >= 0; }
+// The angle of `face` at its vertex v (radians).
+double corner_angle(const TriMesh& mesh, int face, int v);
+// The edge of `face` at its vertex v that a walk around v crosses to keep v on its left (or right).
+inline int edge_around(const TriMesh& mesh, int face, int v, bool keep_left) {
+  const int k = corner_of(mesh, face, v);
+  return keep_left ? (k + 2) % 3 : k;
+}
+
+// ---- Flips --------------------------------------------------------------------------------------
+
+// A change of the strip at apex `vertex`: strip[first + 1 .. last - 1] becomes `other`.
+struct Flip {
+  int first = 0, last = 0, vertex = -1;
+  double turn = 0;                        // the path's turning angle at the vertex (radians)
+  std::vector<int> other;                 // the faces that replace the strip's between first and last
+  std::vector<std::array<Vec2, 3>> laid;  // a chord's: where its trace laid `other` (the strip's layout)
+  bool chain = false, chord = false;      // a zipper's / a chord's (else a semi-star's)
+};
+
+// The strip faces a chord at apex j may replace: from the first face around apex j-1 (p_first) to
+// the last around apex j+1 (q_last; q_first: the first around it). For an end point instead of a
+// vertex: the strip's first (or last) face.
+struct ChordRoom {
+  int p_first = 0, q_first = 0, q_last = 0;
+};
+
+class Straightener {
+ public:
+  // ---- Constructors ----
+  // For paths on `mesh` (which must outlive it). face_marks: #F or more entries, -1 everywhere
+  // (DualSearch::face_marks(), shared so the mesh pays for one such table); left so between calls.
+  Straightener(const TriMesh& mesh, std::vector<int>& face_marks, const ShortestPathOptions& options = {});
+
+  // ---- Options ----
+  // Reads straighten, chords, chord_min_turn and max_passes.
+  ShortestPathOptions options;
+
+  // ---- The whole straightening ----
+  // Phases (ii)+(iii) on `strip` (consecutive faces adjacent; a on strip.front(), b on strip.back()):
+  // `path` is the straightened path, `strip` its strip. Adds its flips and frozen vertices to stats.
+  void straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
+                  PathStats* stats = nullptr);
+
+  // ---- Queries: the strip being straightened ----
+  const std::vector<int>& strip() const { return strip_; }
+  const UnfoldedStrip& unfolded() const { return unfolded_; }
+  // Its funnel path (apices where it goes straight on dropped) and that path's length in the plane.
+  const std::vector<Apex>& apices() const { return apices_; }
+  double length() const { return length_; }
+  // The faces of the strip around vertex v, from the face at index `at` (clamped to the strip):
+  // strip[first..last], or false when that face does not hold v.
+  bool run_of(int v, int at, int& first, int& last) const;
+  // The vertices the last zipper flipped, in strip order.
+  const std::vector<int>& zipper_pivots() const { return pivots_; }
+  // Bytes held for the mesh (the vertex angle sums; the scratch of the longest path is not counted).
+  size_t bytes() const { return angle_sums_.capacity() * sizeof(double); }
+
+  // ---- Mutators: the steps ----
+  // Phase (ii): takes `strip` with the end points `start` on its first face and `end` on its last,
+  // lays it out and finds its funnel path; forgets the frozen vertices of the last path.
+  void begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip);
+  // One pass of phase (iii): every reflex vertex not frozen, largest turn first, gets a flip (a
+  // chord, a zipper or a semi-star) unless its faces touch an earlier one's; the flips are kept
+  // together if they shorten the path, else the largest turn's alone if it does. False when no
+  // reflex vertex was left (the path is locally shortest).
+  bool pass(PathStats* stats = nullptr);
+  // The semi-star flip of apex j, where the path turns by `turn` around vertex v = apices()[j].vertex
+  // whose run in the strip is strip[first..last]: flip.other is v's other semi-star, from
+  // strip[first] round to strip[last]. False when the path cannot be shortened at v (then the pass
+  // freezes it): the other side is open (a boundary) or spans at least π, i.e. v's angle sum θ
+  // satisfies θ − (π + turn) ≥ π.
+  bool flip(size_t j, double turn, int first, int last, Flip& flip);
+  // Widens the semi-star flip of apex j (made by `flip`) to a zipper: the strip's boundary vertices
+  // next to v, on v's side and between the neighbouring apices, that would still block the path with
+  // v out of the way (they lie on v's side of the line between the neighbouring apices) are flipped
+  // with it. Leaves `flip` as it is when no such vertex exists, or v's zipper did not shorten the
+  // path before.
+  void zipper(size_t j, Flip& flip);
+  // The chord flip of apex j: the faces along the straight line from apex j-1 (p) to apex j+1 (q),
+  // followed across the mesh from p (aimed once more where the surface turned the line), then
+  // around q to its strip faces. False (flip unusable) when the line meets a boundary or a vertex,
+  // misses q twice, or cannot make the path shorter; `room` bounds the faces it may replace.
+  bool chord(size_t j, const ChordRoom& room, Flip& flip);
+  // The strip with `chosen` made (non-overlapping, in strip order) into `out`, and its layout into
+  // `u`: the strip's own between the changes, each piece moved rigidly to where the change before it
+  // leaves it; a chord's faces where its trace laid them (moved likewise); other faces laid anew.
+  // `splice` tells the funnel where the strips agree (splice.path null when a loop had to be cut).
+  void apply(const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u, Splice& splice);
+  // The funnel path of an unfolded strip from the start to the end point (`raw`: as the funnel made
+  // it; `out`: where it goes straight on dropped), and its length.
+  double shorten(const UnfoldedStrip& u, std::vector<Apex>& raw, std::vector<Apex>& out, const Splice* splice) const;
+
+ private:
+  // Whether the path through v, turning by `turn`, is locally shortest there (by v's angle sum,
+  // once known: false while it is NaN).
+  bool straight_through(int v, double turn) const { return angle_sums_[v] - kPi - turn >= kPi - 1e-9; }
+  // Whether the strip holds apex x's vertex on its left.
+  bool on_left(const Apex& x) const;
+  // Whether strip[first..last] touches the faces of this pass's flips so far.
+  bool overlaps(int first, int last) const;
+  bool is_frozen(int v) const;
+  void freeze(int v, PathStats* stats);
+
+  const TriMesh& mesh_;
+  std::vector<int>& face_marks_;
+  // Angle sum around each vertex, filled in when a flip first needs it (NaN until then).
+  std::vector<double> angle_sums_;
+
+  // The path: its end points (on the strip's first and last faces; flips keep those faces), the
+  // strip, its unfolding, its funnel path (`made_`: the funnel's own apices, before those where it
+  // goes straight on are dropped) and that path's length.
+  MeshPoint start_, end_;
+  std::vector<int> strip_;
+  UnfoldedStrip unfolded_;
+  std::vector<Apex> apices_, made_;
+  double length_ = 0;
+  // The strip being tried, likewise (laid out from the strip's by `apply`).
+  std::vector<int> trial_;
+  UnfoldedStrip trial_unfolded_;
+  std::vector<Apex> trial_apices_, trial_made_;
+
+  // Vertices frozen, and those whose zipper / chord did not shorten the path (they get the
+  // semi-star from then on).
+  std::vector<int> frozen_, no_chain_, no_chord_;
+  // This pass's flips (the first used_ of flips_), its vertices by turn, and the flips tried.
+  std::vector<Flip> flips_;
+  size_t used_ = 0;
+  std::vector<std::pair<double, size_t>> order_;
+  std::vector<const Flip*> chosen_;
+  // A zipper's vertices and faces; a chord's walk: the faces it entered, where it laid them, and
+  // the edge it left each face by along the line.
+  std::vector<int> pivots_, zipper_faces_;
+  std::vector<int> walk_faces_;
+  std::vector<std::array<Vec2, 3>> walk_laid_;
+  std::vector<int8_t> walk_exits_;
+};
+
+}  // namespace splinekit::surface
