@@ -1,7 +1,9 @@
 // Bézier curves on meshes (curves.h) against closed forms. On a convex planar domain every manifold
 // average A(P, Q; w) is the affine one, so RDC must reproduce Euclidean de Casteljau subdivision and
-// OLR Euclidean Boehm knot insertion, both computed here independently of the core. On curved meshes
-// point insertion must keep the interpolation and tangency properties of b/Surf §4.1.3.
+// OLR Euclidean Boehm knot insertion (adaptive OLR: the Bézier polygons of the leaves of the expansion
+// tree), all computed here independently of the core. On curved meshes point insertion must keep the
+// interpolation and tangency properties of b/Surf §4.1.3.
+#include "common/geometry.h"
 #include "surface/curves.h"
 #include "surface/tangent.h"
 #include "test_meshes.h"
@@ -9,8 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <random>
 #include <string>
 #include <tuple>
@@ -239,6 +242,101 @@ TEST(SurfaceCurves, TraceFollowsTheEuclideanBezierOnAPlane) {
         }
         EXPECT_TRUE(shared) << "points " << i << ", " << i + 1;
       }
+    }
+  }
+}
+
+// Turning angle of the polygon a, b, c at b (radians; 0 straight on, π straight back).
+double turn(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 u = b - a, v = c - b;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+// Adaptive OLR's expansion tree on a plane, computed from Boehm's polygons: node m of level n holds
+// points m .. m+3 of boehm(P, n), the B-spline segment over [m, m+1]·2^-n. Below the root a node is a
+// leaf when it turns by less than `angle` at both inner points, and at max_levels in any case.
+struct EuclideanLeaf {
+  int level, interval;
+};
+struct EuclideanTree {
+  std::vector<std::vector<Vec3>> polygons;  // boehm(P, n) for n = 0 .. max_levels
+  double angle;
+  int max_levels;
+  std::vector<EuclideanLeaf> leaves;
+  double margin = std::numeric_limits<double>::infinity();  // closest a stop decision came to `angle`
+
+  EuclideanTree(const Poly& P, double angle, int max_levels) : angle(angle), max_levels(max_levels) {
+    for (int n = 0; n <= max_levels; ++n) polygons.push_back(boehm(P, n));
+    expand(0, 0);
+  }
+  void expand(int level, int m) {
+    if (level < max_levels && level > 0) {
+      const std::vector<Vec3>& p = polygons[level];
+      const double worst = std::max(turn(p[m], p[m + 1], p[m + 2]), turn(p[m + 1], p[m + 2], p[m + 3]));
+      margin = std::min(margin, std::abs(worst - angle));
+      if (worst < angle) return leaves.push_back({level, m});
+    }
+    if (level == max_levels) return leaves.push_back({level, m});
+    expand(level + 1, 2 * m);
+    expand(level + 1, 2 * m + 1);
+  }
+};
+
+// Adaptive OLR emits, leaf after leaf, the Bézier polygon of the leaf's interval [a, b] (the curve's
+// blossoms f(a,a,a), f(a,a,b), f(a,b,b), f(b,b,b)), each leaf's first point being the previous one's
+// last. b/Surf §4.2.1 as written emits the leftmost leaf's B-spline points and then the last B-spline
+// point of every further leaf; where the tree's level rises from n to n+1, that point P^{n+1}_{2m+5}
+// sits beside the one just emitted, P^n_{m+3} (the same Greville abscissa), and the polygon steps
+// back. On a plane the output is checked against the blossoms, and since no leaf is cut by max_levels
+// here, every turn of it must stay below the angle bound (within a leaf the Bézier polygon turns less
+// than the flat B-spline polygon; at a joint the two handles are collinear). For the same reason the
+// core's extra test of the Bézier polygon's flatness never expands a node here, and the tree must be
+// the one computed from the B-spline polygons alone.
+TEST(SurfaceCurves, OlrAdaptiveEmitsTheLeavesBezierPolygonsOnAPlane) {
+  Plane plane;
+  GeodesicSolver solver(plane.mesh);
+  CurveTracer tracer(solver);
+  for (size_t k = 0; k < plane.polygons.size(); ++k) {
+    const Poly& P = plane.polygons[k];
+    for (double degrees : {5.0, 15.0}) {
+      TraceOptions options;
+      options.scheme = Scheme::kOLR;
+      options.adaptive = true;
+      options.angle = degrees * kPi / 180;
+      const std::string what = "polygon " + std::to_string(k) + ", " + std::to_string(int(degrees)) + "°";
+      const EuclideanTree tree(P, options.angle, options.max_levels);
+      // The oracle is not on a knife's edge, the tree changes level, and no leaf is cut.
+      ASSERT_GT(tree.margin, 1e-6) << what;
+      int lowest = options.max_levels, highest = 0;
+      for (const EuclideanLeaf& leaf : tree.leaves) {
+        lowest = std::min(lowest, leaf.level);
+        highest = std::max(highest, leaf.level);
+      }
+      ASSERT_LT(lowest, highest) << what;
+      ASSERT_LT(highest, options.max_levels) << what;
+
+      std::vector<MeshPoint> points;
+      tracer.subdivide(plane.control(P), options, points);
+      std::vector<Vec3> expected = {P[0]};
+      for (const EuclideanLeaf& leaf : tree.leaves) {
+        const double a = std::ldexp(leaf.interval, -leaf.level), b = std::ldexp(leaf.interval + 1, -leaf.level);
+        expected.insert(expected.end(), {blossom(P, a, a, b), blossom(P, a, b, b), bezier(P, b)});
+      }
+      std::vector<Vec3> got;
+      for (const MeshPoint& p : points) got.push_back(pos(plane.mesh, p));
+      double worst_turn = 0;
+      for (size_t i = 1; i + 1 < got.size(); ++i) {
+        const double t = turn(got[i - 1], got[i], got[i + 1]);
+        EXPECT_LT(t, options.angle) << what << ": point " << i << " of " << got.size() << " turns by "
+                                    << t * 180 / kPi << "°";
+        worst_turn = std::max(worst_turn, t);
+      }
+      ASSERT_EQ(got.size(), expected.size())
+          << what << ": " << tree.leaves.size() << " leaves, levels " << lowest << ".." << highest;
+      for (size_t i = 0; i < got.size(); ++i)
+        EXPECT_NEAR((got[i] - expected[i]).norm(), 0, 1e-9) << what << " point " << i;
+      std::printf("  [%s] %zu leaves, levels %d..%d, worst turn %.3f°\n", what.c_str(), tree.leaves.size(), lowest,
+                  highest, worst_turn * 180 / kPi);
     }
   }
 }

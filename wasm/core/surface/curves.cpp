@@ -146,10 +146,6 @@ void CurveTracer::append_path(const GeodesicPath& p, std::vector<MeshPoint>& pol
   polyline.insert(polyline.end(), points.begin() + first, points.end());
 }
 
-void CurveTracer::append_path(const MeshPoint& a, const MeshPoint& b, std::vector<MeshPoint>& polyline) {
-  append_path(path(a, b), polyline);
-}
-
 // ---- RDC ----------------------------------------------------------------------------------------
 
 CurveTracer::RdcNode CurveTracer::rdc_root(const ControlPolygon& polygon) {
@@ -260,25 +256,82 @@ bool CurveTracer::olr_stop(const Sides& sides, int level, const TraceOptions& op
   return level >= options.max_levels || (level > 0 && flat(sides, options.angle));
 }
 
+// The node's B-spline segment over [a, b] = [u_{m+3}, u_{m+4}] has control points
+// P_{m+i} = f(u_{m+i+1}, u_{m+i+2}, u_{m+i+3}); its inner Bézier points f(a,a,b) and f(a,b,b) differ from
+// P_{m+1} = f(u_{m+2},a,b) and P_{m+2} = f(a,b,u_{m+5}) in one argument only, so they lie on the side
+// P_{m+1} -> P_{m+2}, at fractions (a - u_{m+2}) / (u_{m+5} - u_{m+2}) and (b - u_{m+2}) / (u_{m+5} - u_{m+2})
+// (the B-spline to Bézier conversion, one average each).
+//
+// On a mesh the polygon traced is the Bézier one, which turns at its inner points by other angles
+// than the B-spline polygon at its own; a node whose B-spline polygon is flat becomes a leaf only
+// when the Bézier polygon is flat where it is known: at f(a,a,b), after the joint from the previous
+// leaf (or side P0 -> P1 at the curve's start); at f(a,b,b), before the joint to the next leaf, which
+// is estimated by the path to f(b,b,u_{m+5}) on side P_{m+2} -> P_{m+3} (the next leaf's f(b,b,c) when
+// it has this level; side P2 -> P3 itself at the curve's end). The previous leaf's f(a',a,a) must also
+// turn less into the joint. Below max_levels a node failing these is expanded instead.
+bool CurveTracer::olr_make_leaf(Sides& sides, int level, int m, const TraceOptions& options, const std::vector<OlrLeaf>& leaves,
+                                OlrLeaf& leaf) {
+  const TriMesh& mesh = solver_.mesh();
+  const double u2 = olr_knot(level, m + 2), u5 = olr_knot(level, m + 5), u6 = olr_knot(level, m + 6);
+  leaf.a = olr_knot(level, m + 3), leaf.b = olr_knot(level, m + 4);
+  leaf.inner = sub_path(mesh, sides[1], (leaf.a - u2) / (u5 - u2), (leaf.b - u2) / (u5 - u2));
+  if (!leaves.empty()) leaf.joint = path(leaves.back().inner.end, leaf.inner.start);
+  if (level < options.max_levels) {
+    const GeodesicPath after =
+        leaf.b == 1 ? sides[2] : path(leaf.inner.end, eval_path(mesh, sides[2], (leaf.b - leaf.a) / (u6 - leaf.a)));
+    if (!flat({leaves.empty() ? sides[0] : leaf.joint, leaf.inner, after}, options.angle)) return false;
+    if (!leaves.empty() && !flat({leaves.back().inner, leaf.joint, leaf.inner}, options.angle)) return false;
+  }
+  if (leaf.a == 0) leaf.first = std::move(sides[0]);  // f(0,0,0) = P0, f(0,0,b) = P1
+  if (leaf.b == 1) leaf.last = std::move(sides[2]);   // f(a,1,1) = P_{m+2}, f(1,1,1) = P_{m+3}
+  return true;
+}
+
 void CurveTracer::olr_adaptive(const std::array<Located, 4>& points, const GeodesicPath* parent, int parent_offset,
-                               int level, int interval, const TraceOptions& options, std::vector<MeshPoint>& out) {
+                               int level, int interval, const TraceOptions& options, std::vector<OlrLeaf>& leaves) {
   Sides sides;  // (the root's points are unseeded: searched)
   for (int k = 0; k < 3; ++k) sides[k] = path_between(points[k], points[k + 1], parent, parent_offset);
   const int m = interval;
   if (olr_stop(sides, level, options)) {
-    // A leaf adds its Bézier polygon (blossoms at its knots), so that neighbouring leaves of
-    // different levels meet at a point of the curve with collinear handles. (§4.2.1 adds the
-    // rightmost B-spline control point; across a change of level that point doubles back.)
-    const ControlPolygon bezier =
-        olr_bezier({points[0].point, points[1].point, points[2].point, points[3].point}, sides, level, m);
-    out.insert(out.end(), bezier.begin() + (out.empty() ? 0 : 1), bezier.end());
-    return;
+    OlrLeaf leaf;
+    if (olr_make_leaf(sides, level, m, options, leaves, leaf)) return leaves.push_back(std::move(leaf));
   }
   // The five points of the two children (new indices 2m .. 2m+4).
   std::array<Located, 5> next;
   olr_points(level, (1 << level) + 3, points.data(), sides.data(), m, 2 * m, 5, next.data());
-  olr_adaptive({next[0], next[1], next[2], next[3]}, sides.data(), m, level + 1, 2 * m, options, out);
-  olr_adaptive({next[1], next[2], next[3], next[4]}, sides.data(), m, level + 1, 2 * m + 1, options, out);
+  olr_adaptive({next[0], next[1], next[2], next[3]}, sides.data(), m, level + 1, 2 * m, options, leaves);
+  olr_adaptive({next[1], next[2], next[3], next[4]}, sides.data(), m, level + 1, 2 * m + 1, options, leaves);
+}
+
+// b/Surf §4.2.1 emits the leftmost leaf's B-spline points and then the rightmost B-spline point of
+// every further leaf. That is the subdivided B-spline polygon where all leaves share one level, but
+// where the level rises from n to n+1 the next leaf's rightmost point P^{n+1}_{2m+5} has the Greville
+// abscissa of the point just emitted, P^n_{m+3}, and lies beside it: the polygon steps back (turns up
+// to 180°, on the plane too). Instead every leaf contributes its Bézier polygon, so that leaves of any
+// levels meet at a point of the curve: the inner points on the leaf's middle side (olr_adaptive), and
+// between leaves [a, b] and [b, c] the joint f(b,b,b), which lies on the path from the left leaf's
+// f(a,b,b) to the right leaf's f(b,b,c) at fraction (b - a) / (c - a). Consecutive Bézier points are
+// thus joined by pieces of known paths (the two sides at the curve's ends, the middle sides, and one
+// path per joint, in which the joint's two handles are collinear; olr_make_leaf).
+void CurveTracer::olr_adaptive_polygon(const ControlPolygon& polygon, const TraceOptions& options,
+                                       std::vector<GeodesicPath>& segments) {
+  const TriMesh& mesh = solver_.mesh();
+  std::vector<OlrLeaf>& leaves = scratch_leaves_;
+  leaves.clear();
+  olr_adaptive({unseeded(polygon[0]), unseeded(polygon[1]), unseeded(polygon[2]), unseeded(polygon[3])}, nullptr, 0, 0, 0,
+               options, leaves);
+  segments.clear();
+  segments.push_back(std::move(leaves.front().first));
+  for (size_t k = 0; k < leaves.size(); ++k) {
+    segments.push_back(std::move(leaves[k].inner));
+    if (k + 1 == leaves.size()) break;
+    const double w = (leaves[k].b - leaves[k].a) / (leaves[k + 1].b - leaves[k].a);
+    const GeodesicPath& joint = leaves[k + 1].joint;
+    segments.push_back(sub_path(mesh, joint, 0, w));
+    segments.push_back(sub_path(mesh, joint, w, 1));
+  }
+  segments.push_back(std::move(leaves.back().last));
+  leaves.clear();  // (their strips are not kept alive between traces)
 }
 
 void CurveTracer::olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options,
@@ -328,8 +381,10 @@ void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& o
   points.clear();
   if (options.scheme == Scheme::kOLR) {
     if (options.adaptive) {
-      olr_adaptive({unseeded(polygon[0]), unseeded(polygon[1]), unseeded(polygon[2]), unseeded(polygon[3])}, nullptr, 0, 0, 0,
-                   options, points);
+      olr_adaptive_polygon(polygon, options, scratch_segments_);
+      points.push_back(scratch_segments_.front().start);
+      for (const GeodesicPath& segment : scratch_segments_) points.push_back(segment.end);
+      scratch_segments_.clear();
       return;
     }
     std::vector<Located> located;
@@ -362,8 +417,9 @@ void CurveTracer::trace(const ControlPolygon& polygon, const TraceOptions& optio
     for (const GeodesicPath& side : sides) append_path(side, polyline);
     return;
   }
-  subdivide(polygon, options, scratch_points_);
-  for (size_t i = 0; i + 1 < scratch_points_.size(); ++i) append_path(scratch_points_[i], scratch_points_[i + 1], polyline);
+  olr_adaptive_polygon(polygon, options, scratch_segments_);
+  for (const GeodesicPath& segment : scratch_segments_) append_path(segment, polyline);
+  scratch_segments_.clear();
 }
 
 MeshPoint CurveTracer::eval(const ControlPolygon& polygon, double t, const TraceOptions& options) {

@@ -7,8 +7,9 @@
 //     stencils of the first two levels derived from Boehm knot insertion on the knot vector
 //     0000 1111).
 // Both trace uniformly (a fixed number of levels) or adaptively (stop where consecutive geodesic
-// segments of the polygon turn by less than an angle), evaluate a point at t, and split a curve at t
-// into two curves that interpolate its ends and the split point with the same tangents (§4.1.3).
+// segments of the polygon turn by less than an angle; adaptive OLR traces the Bézier polygons of its
+// leaves, see olr_adaptive_polygon), evaluate a point at t, and split a curve at t into two curves
+// that interpolate its ends and the split point with the same tangents (§4.1.3).
 #pragma once
 
 #include "surface/geodesic.h"
@@ -103,20 +104,35 @@ class CurveTracer {
   bool olr_stop(const Sides& sides, int level, const TraceOptions& options);
   void olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options, std::array<MeshPoint, 4>& points,
                 Sides& sides, int& level, int& interval);
-  // `parent`: the sides of the polygon `points` were made from, indexed from parent_offset (null for
-  // the root, whose points are unseeded).
+  // A leaf of the adaptive expansion tree, as its Bézier polygon needs it: the leaf's knot interval
+  // [a, b], its inner Bézier points f(a,a,b) and f(a,b,b), which lie on its middle side (the piece of
+  // that side between them), and the outer sides where the leaf ends the curve.
+  struct OlrLeaf {
+    double a = 0, b = 1;
+    GeodesicPath inner;  // f(a,a,b) -> f(a,b,b), along the leaf's side P1 -> P2
+    GeodesicPath joint;  // from the previous leaf's f(a',a,a) to f(a,a,b), through f(a,a,a); empty for the first
+    GeodesicPath first;  // when a = 0: side P0 -> P1 (P1 = f(0,0,b)); else empty
+    GeodesicPath last;   // when b = 1: side P2 -> P3 (P2 = f(a,1,1)); else empty
+  };
+  // The leaves below a node, left to right. `parent`: the sides of the polygon `points` were made
+  // from, indexed from parent_offset (null for the root, whose points are unseeded).
   void olr_adaptive(const std::array<Located, 4>& points, const GeodesicPath* parent, int parent_offset, int level,
-                    int interval, const TraceOptions& options, std::vector<MeshPoint>& out);
+                    int interval, const TraceOptions& options, std::vector<OlrLeaf>& leaves);
+  // Node m of `level` (its sides) as the leaf after `leaves`; false when it must be expanded instead.
+  bool olr_make_leaf(Sides& sides, int level, int m, const TraceOptions& options, const std::vector<OlrLeaf>& leaves,
+                     OlrLeaf& leaf);
+  // The adaptive output: the leaves' Bézier polygons joined into one, as its 3·#leaves geodesic segments.
+  void olr_adaptive_polygon(const ControlPolygon& polygon, const TraceOptions& options, std::vector<GeodesicPath>& segments);
   ControlPolygon olr_bezier(const std::array<MeshPoint, 4>& points, const Sides& sides, int level, int interval);
 
-  void append_path(const MeshPoint& a, const MeshPoint& b, std::vector<MeshPoint>& polyline);
   void append_path(const GeodesicPath& p, std::vector<MeshPoint>& polyline);
   void split_leaf(const ControlPolygon& polygon, const ControlPolygon& leaf, double t0, double t1, double t,
                   ControlPolygon& left, ControlPolygon& right);
 
   GeodesicSolver& solver_;
   double mean_face_area_ = -1;
-  std::vector<MeshPoint> scratch_points_;
+  std::vector<OlrLeaf> scratch_leaves_;
+  std::vector<GeodesicPath> scratch_segments_;
 };
 
 }  // namespace splinekit::surface
