@@ -1014,7 +1014,7 @@ export class SurfaceMode implements Mode, SurfaceCommandTarget {
   private drag(p: Pointer3D): void {
     const g = this.gesture;
     if (!g) return;
-    let op: SplineOp | null = null;
+    let op: SplineOp;
     if (g.kind === 'point' || g.kind === 'move') {
       const to = this.meshPointAt(p.sx, p.sy);
       if (!to) return; // off the mesh: stay where it was last
