@@ -9,11 +9,14 @@ import { mulberry32 } from '../dist/core/random.js';
 export function spreadHandles(doc, count) {
   const pts = [];
   for (const s of doc.splines) for (let i = 0; i < s.points.length; i += 6) pts.push([s.points[i], s.points[i + 1]]);
-  const [x0, y0, x1, y1] = doc.bounds;
+  const [x0, y0, x1] = doc.bounds;
   let first = 0, best = Infinity;
   pts.forEach((p, i) => {
     const d = Math.hypot(p[0] - (x0 + x1) / 2, p[1] - y0); // start near the top centre
-    if (d < best) (best = d), (first = i);
+    if (d < best) {
+      best = d;
+      first = i;
+    }
   });
   const chosen = [pts[first]];
   const dist = pts.map((p) => Math.hypot(p[0] - pts[first][0], p[1] - pts[first][1]));

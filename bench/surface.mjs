@@ -52,8 +52,10 @@ export function continuityChecker(mesh, eps = 1e-12) {
   for (let v = 0; v < nv; v++) {
     const key = `${x[3 * v]},${x[3 * v + 1]},${x[3 * v + 2]}`;
     const first = seen.get(key);
-    if (first === undefined) seen.set(key, v), (canonical[v] = v);
-    else canonical[v] = first;
+    if (first === undefined) {
+      seen.set(key, v);
+      canonical[v] = v;
+    } else canonical[v] = first;
   }
   const support = (p) => {
     const w = [1 - p.uv[0] - p.uv[1], p.uv[0], p.uv[1]];
@@ -103,7 +105,10 @@ export function surfaceValidity(mesh, count, seed = 1) {
           r.first_break ??= { curve: i, at: k, a: traced.points[k], b: traced.points[k + 1] };
         }
       }
-      if (ok) r.continuous++, r.valid++;
+      if (ok) {
+        r.continuous++;
+        r.valid++;
+      }
       const n = traced.points.length, xyz = traced.xyz;
       const p0 = mesh.xyz(controls[0]), p3 = mesh.xyz(controls[3]);
       const d0 = Math.hypot(xyz[0] - p0[0], xyz[1] - p0[1], xyz[2] - p0[2]);
@@ -223,7 +228,9 @@ export function surfaceDrag(mesh, moves = 60, seed = 3, passes = 3, options = { 
       x.push(traced.ms);
       if (pass === 0) points += traced.points.length;
     }
-    wall.push(w), move.push(m), wasm.push(x);
+    wall.push(w);
+    move.push(m);
+    wasm.push(x);
   }
   const best = (rows) => rows[0].map((_, i) => Math.min(...rows.map((r) => r[i])));
   const bestWall = best(wall);

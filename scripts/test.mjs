@@ -1,21 +1,23 @@
 #!/usr/bin/env node
-// `npm test`: native (ctest), unit (Vitest, real wasm in Node), e2e (Playwright in Debian
-// Chromium), in that order. Stops at the first failing level and ends with one line,
-// "N passed, N failed", totalled over the levels that ran.
+// `npm test`: lint (ESLint, clang-format), native (ctest), unit (Vitest, real wasm in Node), e2e
+// (Playwright in Debian Chromium), in that order. Stops at the first failing level and ends with
+// one line, "N passed, N failed", totalled over the levels that ran (lint counts one check per tool).
 import { spawn } from 'node:child_process';
 import { mkdirSync, readFileSync, rmSync } from 'node:fs';
+import { CPP_FORMAT_ENFORCED, cppFiles, unformatted } from './lint.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
 mkdirSync(`${root}build`, { recursive: true });
 let passed = 0;
 let failed = 0;
 
-function run(cmd, args, env = {}) {
+function run(cmd, args, env = {}, { echo = true } = {}) {
   return new Promise((resolve) => {
     let output = '';
     const child = spawn(cmd, args, { cwd: root, env: { ...process.env, ...env }, stdio: ['ignore', 'pipe', 'pipe'] });
-    child.stdout.on('data', (d) => { output += d; process.stdout.write(d); });
-    child.stderr.on('data', (d) => { output += d; process.stderr.write(d); });
+    child.stdout.on('data', (d) => { output += d; if (echo) process.stdout.write(d); });
+    child.stderr.on('data', (d) => { output += d; if (echo) process.stderr.write(d); });
+    child.on('error', (err) => { output += String(err); });
     child.on('close', (code) => resolve({ code: code ?? 1, output }));
   });
 }
@@ -30,6 +32,32 @@ function readJSON(path) {
     return JSON.parse(readFileSync(path, 'utf8'));
   } catch {
     return null;
+  }
+}
+
+// ---- lint ----------------------------------------------------------------------------------
+console.log('\n== lint (eslint, clang-format) ==');
+{
+  const { code } = await run('npx', ['eslint', '.']);
+  if (code === 0) {
+    console.log('eslint: no errors');
+    passed += 1;
+  } else {
+    failed += 1;
+    finish(false);
+  }
+  const cf = await run('clang-format', ['--dry-run', '--Werror', ...cppFiles()], {}, { echo: CPP_FORMAT_ENFORCED });
+  const files = unformatted(cf.output);
+  if (cf.code === 0) {
+    console.log(`clang-format: ${cppFiles().length} C++ files formatted`);
+    passed += 1;
+  } else if (!CPP_FORMAT_ENFORCED && files.length > 0) {
+    // Not counted either way until the one-time reformat (scripts/lint.mjs, CPP_FORMAT_ENFORCED).
+    console.log(`clang-format: ${files.length} C++ files would change (not enforced yet: npm run format)`);
+  } else {
+    if (!CPP_FORMAT_ENFORCED) process.stderr.write(cf.output);
+    failed += 1;
+    finish(false);
   }
 }
 

@@ -211,7 +211,8 @@ function triangulate(points: DomainPoints, handleCount: number, h: number): Doma
   const tri = delaunay.triangles;
   const kept: number[] = [];
   for (let t = 0; t < tri.length; t += 3) {
-    let a = tri[t], b = tri[t + 1], c = tri[t + 2];
+    const a = tri[t];
+    let b = tri[t + 1], c = tri[t + 2];
     const cx = (all[2 * a] + all[2 * b] + all[2 * c]) / 3, cy = (all[2 * a + 1] + all[2 * b + 1] + all[2 * c + 1]) / 3;
     const twice = (all[2 * b] - all[2 * a]) * (all[2 * c + 1] - all[2 * a + 1]) - (all[2 * c] - all[2 * a]) * (all[2 * b + 1] - all[2 * a + 1]);
     if (Math.abs(twice) <= 1e-12 * h * h || !insidePolygon(polygon, cx, cy)) continue;

@@ -25,7 +25,10 @@ export function randomMeshPoints(mesh: SurfaceMesh, count: number, seed: number)
       else hi = mid;
     }
     let u = random(), v = random();
-    if (u + v > 1) (u = 1 - u), (v = 1 - v);
+    if (u + v > 1) {
+      u = 1 - u;
+      v = 1 - v;
+    }
     out.push({ face: lo, uv: [u, v] });
   }
   return out;

@@ -277,7 +277,10 @@ export class SvgDocument {
     const keyTimes = times.map((t) => formatNumber(t / duration)).join(';');
     const offsets: number[] = [];
     let at = 0;
-    for (const sp of this.splines) offsets.push(at), (at += sp.points.length);
+    for (const sp of this.splines) {
+      offsets.push(at);
+      at += sp.points.length;
+    }
     offsets.push(at);
 
     const { out, elements } = this.rewrite(true, false);

@@ -106,6 +106,7 @@ function decode(input: string | Uint8Array | ArrayBuffer, name: string, maxBytes
   }
   const text = bytes ? new TextDecoder('utf-8').decode(bytes) : (input as string);
   if (text.trim() === '') throw new SplinekitError('invalid-svg', `${name}: the file is empty`);
+  // eslint-disable-next-line no-control-regex -- control characters are what tells binary data from text
   if (/[\u0000-\u0008\u000e-\u001f]/.test(text.slice(0, 4096))) {
     throw new SplinekitError('invalid-svg', `${name}: binary data, not an SVG (XML) file`);
   }

@@ -294,8 +294,10 @@ test('Surface mode: move, turn and scale a spline, switch RDC/OLR and adaptive, 
   s = await settled(page);
   expect(s.splines[0].json.points).toHaveLength(sp.json.points.length + 3);
   expect(s.selection?.point).toBe(3);
+  const smooth = s.splines[0].json.smooth[1];
   await page.keyboard.press('c'); // the new anchor: smooth ⇄ corner
   s = await settled(page);
+  expect(s.splines[0].json.smooth[1]).toBe(!smooth);
   await page.keyboard.press('Delete');
   s = await settled(page);
   expect(s.splines[0].json.points).toHaveLength(sp.json.points.length);

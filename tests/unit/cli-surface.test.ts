@@ -30,7 +30,6 @@ const sub = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 const add = (a: Vec3, b: Vec3): Vec3 => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
 const mul = (a: Vec3, s: number): Vec3 => [a[0] * s, a[1] * s, a[2] * s];
 const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const cross = (a: Vec3, b: Vec3): Vec3 => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
 const norm = (a: Vec3) => Math.hypot(a[0], a[1], a[2]);
 const dist = (a: Vec3, b: Vec3) => norm(sub(a, b));
 
@@ -399,7 +398,10 @@ describe('splinekit geodesic', () => {
     for (let i = 0; i < 12; i++) {
       const a = Math.floor(rnd() * mesh.positions.length);
       let u = rnd(), v = rnd();
-      if (u + v > 1) (u = 1 - u), (v = 1 - v);
+      if (u + v > 1) {
+        u = 1 - u;
+        v = 1 - v;
+      }
       pairs.push([a, { face: Math.floor(rnd() * mesh.faces.length), uv: [u, v] }]);
     }
     const json = geodesic(spotFile, pairs);
@@ -572,7 +574,10 @@ describe('splinekit trace', () => {
 function boxSize(mesh: Mesh): number {
   const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
   for (const p of mesh.positions)
-    for (let k = 0; k < 3; k++) (lo[k] = Math.min(lo[k], p[k])), (hi[k] = Math.max(hi[k], p[k]));
+    for (let k = 0; k < 3; k++) {
+      lo[k] = Math.min(lo[k], p[k]);
+      hi[k] = Math.max(hi[k], p[k]);
+    }
   return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 

@@ -28,7 +28,6 @@ type Vec3 = [number, number, number];
 const sub = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 const add = (a: Vec3, b: Vec3): Vec3 => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
 const mul = (a: Vec3, s: number): Vec3 => [a[0] * s, a[1] * s, a[2] * s];
-const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const norm = (a: Vec3) => Math.hypot(a[0], a[1], a[2]);
 const dist = (a: Vec3, b: Vec3) => norm(sub(a, b));
 const unit = (a: Vec3): Vec3 => mul(a, 1 / norm(a));

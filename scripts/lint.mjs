@@ -1,0 +1,62 @@
+#!/usr/bin/env node
+// `npm run lint`: ESLint over the TypeScript and JavaScript (eslint.config.js) and clang-format
+// over the C++ (.clang-format), both checking only. `npm run format` (`--fix`): clang-format -i
+// on the C++, then eslint --fix. `npm test` runs the same two checks as its first level.
+import { spawnSync } from 'node:child_process';
+import { readdirSync } from 'node:fs';
+import { join } from 'node:path';
+
+const root = new URL('..', import.meta.url).pathname;
+
+/** Folders whose C++ sources clang-format checks. */
+export const CPP_DIRS = ['wasm', 'tests/native', 'bench/native'];
+
+/**
+ * Whether a C++ file clang-format would change fails the check. Off until the C++ is reformatted
+ * once with `npm run format` (the code predates .clang-format: 300 of its 10,926 lines would move);
+ * while off, the check still runs and names the files that would change. Set
+ * CPP_FORMAT_ENFORCED_BY_DEFAULT to true in the commit that follows that reformat;
+ * SPLINEKIT_CPP_FORMAT=1 turns the check on for one run before then.
+ */
+const CPP_FORMAT_ENFORCED_BY_DEFAULT = false;
+export const CPP_FORMAT_ENFORCED = CPP_FORMAT_ENFORCED_BY_DEFAULT || process.env.SPLINEKIT_CPP_FORMAT === '1';
+
+/** The C++ sources under CPP_DIRS (.cpp, .h), relative to the repository root, sorted. */
+export function cppFiles() {
+  return CPP_DIRS.flatMap((dir) =>
+    readdirSync(join(root, dir), { recursive: true })
+      .map(String)
+      .filter((f) => /\.(cpp|h)$/.test(f))
+      .map((f) => join(dir, f)),
+  ).sort();
+}
+
+/** The files clang-format would change, parsed from its --dry-run warnings. */
+export function unformatted(output) {
+  return [...new Set([...output.matchAll(/^(.+?):\d+:\d+: (?:warning|error): code should be clang-formatted/gm)].map((m) => m[1]))];
+}
+
+function sh(cmd, args) {
+  const r = spawnSync(cmd, args, { cwd: root, stdio: ['ignore', 'inherit', 'pipe'], encoding: 'utf8' });
+  if (r.error) throw r.error;
+  return { code: r.status ?? 1, stderr: r.stderr };
+}
+
+if (import.meta.url === `file://${process.argv[1]}`) {
+  const fix = process.argv.includes('--fix');
+  let ok = true;
+  if (fix) {
+    ok = sh('clang-format', ['-i', ...cppFiles()]).code === 0 && ok;
+    ok = sh('npx', ['eslint', '--fix', '.']).code === 0 && ok;
+  } else {
+    ok = sh('npx', ['eslint', '.']).code === 0 && ok;
+    const { stderr } = sh('clang-format', ['--dry-run', ...cppFiles()]);
+    const files = unformatted(stderr);
+    if (files.length > 0) {
+      if (CPP_FORMAT_ENFORCED) process.stderr.write(stderr);
+      console.log(`clang-format: ${files.length} C++ files would change (${CPP_FORMAT_ENFORCED ? 'failed' : 'not enforced yet: npm run format'}): ${files.join(' ')}`);
+      ok = ok && !CPP_FORMAT_ENFORCED;
+    }
+  }
+  process.exit(ok ? 0 : 1);
+}
