@@ -9,6 +9,7 @@ const CHUNK_JSON = 0x4e4f534a;
 const CHUNK_BIN = 0x004e4942;
 
 /** glTF JSON: untyped input, checked where it is used. */
+// eslint-disable-next-line @typescript-eslint/no-explicit-any -- the file's JSON, any shape until checked
 type Json = any;
 
 function decodeDataUri(uri: string, file: string, what: string): Uint8Array {

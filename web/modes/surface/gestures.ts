@@ -123,7 +123,7 @@ export class SurfaceGestures {
   private drag(p: Pointer3D): void {
     const g = this._gesture, mode = this.mode;
     if (!g) return;
-    let op: SplineOp | null = null;
+    let op: SplineOp;
     if (g.kind === 'point' || g.kind === 'move') {
       const to = this.picking.meshPointAt(p.sx, p.sy);
       if (!to) return; // off the mesh: stay where it was last
