@@ -30,7 +30,9 @@
 using namespace splinekit::surface;
 using Clock = std::chrono::steady_clock;
 
-static double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+static double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
 
 static double percentile(std::vector<double> xs, double p) {
   if (xs.empty()) return 0;
@@ -41,10 +43,10 @@ static double percentile(std::vector<double> xs, double p) {
 
 struct Quality {
   int paths = 0;
-  int within = 0;     // ratio <= 1.005
-  int shorter = 0;    // length < exact * (1 - 1e-9)
-  int failed = 0;     // shortest_path returned false for a reachable target
-  double worst = 1;   // largest ratio
+  int within = 0;    // ratio <= 1.005
+  int shorter = 0;   // length < exact * (1 - 1e-9)
+  int failed = 0;    // shortest_path returned false for a reachable target
+  double worst = 1;  // largest ratio
   double sum_ratio = 0;
   std::vector<double> ms;
   std::vector<double> visited;
@@ -64,11 +66,12 @@ struct Quality {
     double total = 0;
     for (double t : ms) total += t;
     char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "{\"paths\":%d,\"within_0_5pct\":%d,\"within_pct\":%.2f,\"shorter\":%d,\"failed\":%d,\"worst_ratio\":%.6f,"
-                  "\"mean_ratio\":%.6f,\"mean_ms\":%.4f,\"median_ms\":%.4f,\"p99_ms\":%.4f,\"median_visited_nodes\":%.0f}",
-                  paths, within, paths ? 100.0 * within / paths : 0.0, shorter, failed, worst, paths ? sum_ratio / paths : 0.0,
-                  paths ? total / paths : 0.0, percentile(ms, 0.5), percentile(ms, 0.99), percentile(visited, 0.5));
+    std::snprintf(
+        buf, sizeof buf,
+        "{\"paths\":%d,\"within_0_5pct\":%d,\"within_pct\":%.2f,\"shorter\":%d,\"failed\":%d,\"worst_ratio\":%.6f,"
+        "\"mean_ratio\":%.6f,\"mean_ms\":%.4f,\"median_ms\":%.4f,\"p99_ms\":%.4f,\"median_visited_nodes\":%.0f}",
+        paths, within, paths ? 100.0 * within / paths : 0.0, shorter, failed, worst, paths ? sum_ratio / paths : 0.0,
+        paths ? total / paths : 0.0, percentile(ms, 0.5), percentile(ms, 0.99), percentile(visited, 0.5));
     return buf;
   }
 };
@@ -93,7 +96,8 @@ int main(int argc, char** argv) {
     TriMesh m;
     std::string error;
     t0 = Clock::now();
-    if (build_mesh(arrays.positions.data(), arrays.vertices(), arrays.triangles.data(), arrays.faces(), m, error) != MeshStatus::kOk) {
+    if (build_mesh(arrays.positions.data(), arrays.vertices(), arrays.triangles.data(), arrays.faces(), m, error) !=
+        MeshStatus::kOk) {
       std::fprintf(stderr, "surface_bench: %s: %s\n", file.c_str(), error.c_str());
       return 1;
     }
@@ -139,7 +143,8 @@ int main(int argc, char** argv) {
         continue;
       }
       const MeshPoint a = vertex_point(mesh, src), b = vertex_point(mesh, dst);
-      for (auto [graph, q] : {std::pair<SearchGraph, Quality*>{SearchGraph::kRefined, &refined}, {SearchGraph::kDual, &dual}}) {
+      for (auto [graph, q] :
+           {std::pair<SearchGraph, Quality*>{SearchGraph::kRefined, &refined}, {SearchGraph::kDual, &dual}}) {
         PathStats stats;
         t0 = Clock::now();
         const bool ok = solver.shortest_path(a, b, path, &stats, graph);
@@ -162,12 +167,14 @@ int main(int argc, char** argv) {
   std::printf(
       "{\"file_vertices\":%d,\"file_faces\":%d,\"vertices\":%d,\"triangles\":%d,\"read_ms\":%.1f,"
       "\"build_mesh_ms\":%.2f,\"solver_ms\":%.2f,\"precompute_ms\":%.2f,"
-      "\"graph_nodes\":%d,\"graph_edges\":%d,\"mesh_bytes\":%zu,\"solver_bytes\":%zu,\"bytes_per_triangle\":%.2f,\"bytes_per_triangle_after_paths\":%.2f,"
+      "\"graph_nodes\":%d,\"graph_edges\":%d,\"mesh_bytes\":%zu,\"solver_bytes\":%zu,\"bytes_per_triangle\":%.2f,"
+      "\"bytes_per_triangle_after_paths\":%.2f,"
       "\"sources\":%d,\"targets_per_source\":%d,\"seed\":%u,\"unreachable\":%d,"
       "\"exact_build_ms\":%.1f,\"exact_ms_per_source\":%.1f,\"peak_rss_mb\":%.0f,"
       "\"refined\":%s,\"dual\":%s}\n",
       arrays.vertices(), arrays.faces(), nv, nf, read_ms, percentile(build_times, 0.5), percentile(solver_times, 0.5),
-      percentile(build_times, 0.5) + percentile(solver_times, 0.5), solver.graph().nodes(), solver.graph().edges, mb, sb, double(mb + sb) / nf, double(mb + sb_after) / nf, sources, targets, seed,
-      unreachable, exact_build_ms, sources ? exact_total / sources : 0.0, peak_mb, refined.json().c_str(), dual.json().c_str());
+      percentile(build_times, 0.5) + percentile(solver_times, 0.5), solver.graph().nodes(), solver.graph().edges, mb,
+      sb, double(mb + sb) / nf, double(mb + sb_after) / nf, sources, targets, seed, unreachable, exact_build_ms,
+      sources ? exact_total / sources : 0.0, peak_mb, refined.json().c_str(), dual.json().c_str());
   return 0;
 }

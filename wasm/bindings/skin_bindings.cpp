@@ -27,7 +27,8 @@ class SkinRigHandle {
   int setup(const SplineSetHandle& splines, int handle_count, int samples) {
     std::vector<Continuity> kinds;
     for (int k : kinds_) {
-      if (k < 0 || k > int(Continuity::kAngle)) return fail("junction kind " + std::to_string(k) + " is not a continuity tag");
+      if (k < 0 || k > int(Continuity::kAngle))
+        return fail("junction kind " + std::to_string(k) + " is not a continuity tag");
       kinds.push_back(Continuity(k));
     }
     SkinOptions options;

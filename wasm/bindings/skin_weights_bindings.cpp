@@ -57,9 +57,9 @@ class SkinWeightsHandle {
 
   std::string error() const { return error_; }
   int handle_count() const { return int(handles_.size()); }
-  val weights() { return view_of(weights_); }            // #V by #H
+  val weights() { return view_of(weights_); }               // #V by #H
   val triangle_gradients() { return view_of(gradients_); }  // #F by #H by 2
-  val iterations() { return view_of(iterations_); }      // BBW: linear solves per handle
+  val iterations() { return view_of(iterations_); }         // BBW: linear solves per handle
   bool converged() const { return converged_; }
   int pinned() const { return pinned_; }
 

@@ -37,8 +37,8 @@ class SurfaceMeshHandle {
   int build() {
     TriMesh mesh;
     std::string error;
-    if (build_mesh(positions_in_.data(), int(positions_in_.size() / 3), triangles_in_.data(), int(triangles_in_.size() / 3),
-                   mesh, error) != MeshStatus::kOk)
+    if (build_mesh(positions_in_.data(), int(positions_in_.size() / 3), triangles_in_.data(),
+                   int(triangles_in_.size() / 3), mesh, error) != MeshStatus::kOk)
       return fail(error);
     tracer_.reset();
     solver_.reset();
@@ -78,7 +78,8 @@ class SurfaceMeshHandle {
     if (!input(0, a) || !input(1, b)) return kInvalidInput;
     const auto start = clock::now();
     GeodesicPath path;
-    if (!solver_->shortest_path(a, b, path)) return fail("the two points lie on parts of the mesh that are not connected");
+    if (!solver_->shortest_path(a, b, path))
+      return fail("the two points lie on parts of the mesh that are not connected");
     ms_ = elapsed(start);
     path_points(*mesh_, path, scratch_);
     length_ = path_length(*mesh_, path);
@@ -92,7 +93,8 @@ class SurfaceMeshHandle {
     if (!input(0, a) || !input(1, b)) return kInvalidInput;
     if (!(t0 >= 0 && t0 <= 1 && t1 >= 0 && t1 <= 1)) return fail("path fractions must lie in [0, 1]");
     GeodesicPath path;
-    if (!solver_->shortest_path(a, b, path)) return fail("the two points lie on parts of the mesh that are not connected");
+    if (!solver_->shortest_path(a, b, path))
+      return fail("the two points lie on parts of the mesh that are not connected");
     scratch_.assign({eval_path(*mesh_, path, t0), eval_path(*mesh_, path, t1)});
     output(scratch_);
     return kOk;
@@ -188,7 +190,8 @@ class SurfaceMeshHandle {
   int rotateScale(int count, double f, double u, double v, double angle, double scale) {
     MeshPoint c;
     if (!spline_input(count, 0) || !point(f, u, v, c)) return kInvalidInput;
-    if (!std::isfinite(angle) || !std::isfinite(scale) || scale < 0) return fail("angle and scale must be finite (scale >= 0)");
+    if (!std::isfinite(angle) || !std::isfinite(scale) || scale < 0)
+      return fail("angle and scale must be finite (scale >= 0)");
     rotate_scale(*solver_, spline_, c, angle, scale);
     output(spline_);
     return kOk;
@@ -204,7 +207,8 @@ class SurfaceMeshHandle {
   int mapPoints(double f, double u, double v, double ux, double uy, double uz, double rotation, double scale) {
     MeshPoint c;
     if (!point(f, u, v, c)) return kInvalidInput;
-    if (!std::isfinite(rotation) || !std::isfinite(scale) || !(scale > 0)) return fail("rotation and scale must be finite (scale > 0)");
+    if (!std::isfinite(rotation) || !std::isfinite(scale) || !(scale > 0))
+      return fail("rotation and scale must be finite (scale > 0)");
     for (double x : xy_in_)
       if (!std::isfinite(x)) return fail("the drawing has a non-finite coordinate");
     map_points(*mesh_, c, Vec3(ux, uy, uz), rotation, scale, xy_in_.data(), int(xy_in_.size() / 2), scratch_);

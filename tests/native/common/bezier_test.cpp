@@ -126,7 +126,8 @@ TEST(Bezier, ArcLengthOfLineAndQuarterCircle) {
   // Independent: a 200k-piece polyline approaches from below to ~1e-10.
   double poly = 0;
   const int n = 200000;
-  for (int k = 0; k < n; ++k) poly += (bezier_point(kQuarter, double(k + 1) / n) - bezier_point(kQuarter, double(k) / n)).norm();
+  for (int k = 0; k < n; ++k)
+    poly += (bezier_point(kQuarter, double(k + 1) / n) - bezier_point(kQuarter, double(k) / n)).norm();
   EXPECT_NEAR(q, poly, 1e-9);
   EXPECT_GE(q, poly);
 }

@@ -62,8 +62,8 @@ TEST(SplineSet, BoundsSampleAndClassify) {
   EXPECT_DOUBLE_EQ(b[7], 3);
   std::vector<double> samples(2 * 3 * 4);
   spline_set_sample(s, 3, samples.data());
-  EXPECT_DOUBLE_EQ(samples[2], 1.5);   // midpoint of the line
-  EXPECT_DOUBLE_EQ(samples[6], 10);    // triangle starts at (10,0)
+  EXPECT_DOUBLE_EQ(samples[2], 1.5);    // midpoint of the line
+  EXPECT_DOUBLE_EQ(samples[6], 10);     // triangle starts at (10,0)
   EXPECT_NEAR(samples[22], 10, 1e-14);  // closing segment ends back at (10,0)
   EXPECT_NEAR(samples[23], 0, 1e-14);
   JunctionInfo j[3];

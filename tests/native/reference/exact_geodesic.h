@@ -63,7 +63,9 @@ namespace splinekit::reference {
 
 class ExactGeodesic {
  public:
-  ExactGeodesic(const double* positions, int num_vertices, const int* triangles, int num_faces) { build(positions, num_vertices, triangles, num_faces); }
+  ExactGeodesic(const double* positions, int num_vertices, const int* triangles, int num_faces) {
+    build(positions, num_vertices, triangles, num_faces);
+  }
 
   // Distance from `source` to every vertex (+infinity where unreachable).
   std::vector<double> distances(int source) {
@@ -80,12 +82,12 @@ class ExactGeodesic {
   std::size_t windows_propagated() const { return propagated_; }
 
  private:
-  struct Window {        // 48 bytes
-    double b0, b1;        // interval, measured from the edge's lower-index vertex
-    double sx, sy;        // unfolded (pseudo-)source in the edge frame (lower vertex at origin, x along the edge)
-    double sigma;         // distance from the source to the pseudo-source
-    int edge;             // undirected edge id
-    signed char side;     // face the window propagates into: 0 = face on y > 0 of the edge frame, 1 = on y < 0
+  struct Window {      // 48 bytes
+    double b0, b1;     // interval, measured from the edge's lower-index vertex
+    double sx, sy;     // unfolded (pseudo-)source in the edge frame (lower vertex at origin, x along the edge)
+    double sigma;      // distance from the source to the pseudo-source
+    int edge;          // undirected edge id
+    signed char side;  // face the window propagates into: 0 = face on y > 0 of the edge frame, 1 = on y < 0
     bool alive, propagated;
   };
   // Monotone priority queue (radix heap over the bit patterns of non-negative doubles, which sort
@@ -183,7 +185,8 @@ class ExactGeodesic {
     for (int f = 0; f < nf; ++f) {
       for (int k = 0; k < 3; ++k) {
         const int u = tri_[3 * f + k], v = tri_[3 * f + (k + 1) % 3];
-        if (u < 0 || u >= nv || v < 0 || v >= nv) throw std::invalid_argument("exact_geodesic: triangle index out of range");
+        if (u < 0 || u >= nv || v < 0 || v >= nv)
+          throw std::invalid_argument("exact_geodesic: triangle index out of range");
         if (u == v) throw std::invalid_argument("exact_geodesic: degenerate triangle " + std::to_string(f));
         const int a = std::min(u, v), b = std::max(u, v);
         const std::uint64_t key = (std::uint64_t(a) << 32) | std::uint32_t(b);
@@ -199,7 +202,8 @@ class ExactGeodesic {
         }
         const int e = it->second, side = u < v ? 0 : 1;
         if (edge_f_[2 * e + side] != -1)
-          throw std::invalid_argument("exact_geodesic: mesh is not manifold or not consistently oriented (edge " + std::to_string(a) + "-" + std::to_string(b) + ")");
+          throw std::invalid_argument("exact_geodesic: mesh is not manifold or not consistently oriented (edge " +
+                                      std::to_string(a) + "-" + std::to_string(b) + ")");
         edge_f_[2 * e + side] = f;
         face_edge_[3 * f + k] = e;
       }
@@ -217,7 +221,8 @@ class ExactGeodesic {
         const int v = tri_[3 * f + k];
         vf_face_[fill[v]] = f;
         vf_corner_[fill[v]++] = k;
-        const double a = len_[face_edge_[3 * f + k]], b = len_[face_edge_[3 * f + (k + 2) % 3]], c = len_[face_edge_[3 * f + (k + 1) % 3]];
+        const double a = len_[face_edge_[3 * f + k]], b = len_[face_edge_[3 * f + (k + 2) % 3]],
+                     c = len_[face_edge_[3 * f + (k + 1) % 3]];
         const double denom = 2 * a * b;
         const double cosv = denom > 0 ? (a * a + b * b - c * c) / denom : 1.0;
         angle[v] += std::acos(std::clamp(cosv, -1.0, 1.0));
@@ -448,7 +453,8 @@ class ExactGeodesic {
 
   // Child window on edge e2 of face f, whose endpoints p (lower id) and q sit at pp, pq in the working
   // frame; wpos is the vertex of f opposite e2; the child interval is between points q0 and q1.
-  void child(int f, int e2, const double* pp, const double* pq, const double* wpos, const double* q0, const double* q1, double sx, double sy, double sigma) {
+  void child(int f, int e2, const double* pp, const double* pq, const double* wpos, const double* q0, const double* q1,
+             double sx, double sy, double sigma) {
     const int s2 = edge_f_[2 * e2] == f ? 0 : 1;
     double ux = pq[0] - pp[0], uy = pq[1] - pp[1];
     const double l = norm2(ux, uy);
@@ -558,7 +564,8 @@ class ExactGeodesic {
 // positions: #V x 3 doubles (row-major), triangles: #F x 3 ints; the mesh must be manifold and
 // consistently oriented (it may have boundaries). Returns +infinity for unreachable vertices.
 // Throws std::invalid_argument on a bad mesh or source.
-inline std::vector<double> exact_geodesic_distances(const double* positions, int num_vertices, const int* triangles, int num_faces, int source) {
+inline std::vector<double> exact_geodesic_distances(const double* positions, int num_vertices, const int* triangles,
+                                                    int num_faces, int source) {
   ExactGeodesic solver(positions, num_vertices, triangles, num_faces);
   return solver.distances(source);
 }

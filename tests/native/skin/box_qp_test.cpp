@@ -70,9 +70,7 @@ Eigen::VectorXd enumerate_optimum(const SpMat& Q, const Eigen::VectorXd& c) {
   return best;
 }
 
-Eigen::VectorXd unconstrained(const SpMat& Q, const Eigen::VectorXd& c) {
-  return Eigen::MatrixXd(Q).llt().solve(-c);
-}
+Eigen::VectorXd unconstrained(const SpMat& Q, const Eigen::VectorXd& c) { return Eigen::MatrixXd(Q).llt().solve(-c); }
 
 }  // namespace
 

@@ -86,4 +86,6 @@ TEST(Operators, GradientsOfTheCoordinateFunctionsAreTheIdentity) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RegularAndIrregular, OperatorsOnMeshes, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Irregular" : "Regular"; });
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                           return info.param ? "Irregular" : "Regular";
+                         });

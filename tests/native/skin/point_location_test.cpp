@@ -162,4 +162,6 @@ TEST(PointLocation, LocationOfANonConvexMeshFindsTheNearestTriangleAcrossTheNotc
 }
 
 INSTANTIATE_TEST_SUITE_P(RegularAndIrregular, LocationOnMeshes, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Irregular" : "Regular"; });
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                           return info.param ? "Irregular" : "Regular";
+                         });

@@ -119,7 +119,8 @@ TEST(Shepard, PartitionOfUnityInterpolationAndGradient) {
   }
   // Closed form for point (30,14): w_i ∝ 1/d_i².
   double inv[4], s = 0;
-  for (int i = 0; i < 4; ++i) s += inv[i] = 1 / (std::pow(30 - kHandles[2 * i], 2) + std::pow(14 - kHandles[2 * i + 1], 2));
+  for (int i = 0; i < 4; ++i)
+    s += inv[i] = 1 / (std::pow(30 - kHandles[2 * i], 2) + std::pow(14 - kHandles[2 * i + 1], 2));
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(w[4 + i], inv[i] / s, 1e-15);
   // Gradient by central differences.
   const double h = 1e-6;
@@ -226,7 +227,8 @@ TEST(SkinRig, BaselinesMatchTheirDefinitions) {
   double T[24];
   identity(T, 4);
   for (int i = 0; i < 4; ++i) T[6 * i + 4] = 3, T[6 * i + 5] = -2;
-  for (SkinMethod m : {SkinMethod::kNaiveAll, SkinMethod::kNaiveInterpolated, SkinMethod::kNaiveJacobian, SkinMethod::kFit}) {
+  for (SkinMethod m :
+       {SkinMethod::kNaiveAll, SkinMethod::kNaiveInterpolated, SkinMethod::kNaiveJacobian, SkinMethod::kFit}) {
     const double* X = rig.baseline(m, T);
     for (int k = 0; k < s.point_count(); ++k) {
       EXPECT_NEAR(X[2 * k], s.points[2 * k] + 3, 1e-9);
@@ -237,7 +239,8 @@ TEST(SkinRig, BaselinesMatchTheirDefinitions) {
   // anchor's blended transform, which is the naive result at the anchor plus M·(H − A).
   identity(T, 4);
   T[0] = 0, T[1] = 1, T[2] = -1, T[3] = 0, T[4] = 12 + 10, T[5] = 10 - 12;
-  std::vector<double> all(rig.baseline(SkinMethod::kNaiveAll, T), rig.baseline(SkinMethod::kNaiveAll, T) + s.points.size());
+  std::vector<double> all(rig.baseline(SkinMethod::kNaiveAll, T),
+                          rig.baseline(SkinMethod::kNaiveAll, T) + s.points.size());
   const double* interp = rig.baseline(SkinMethod::kNaiveInterpolated, T);
   for (int k = 0; k < s.point_count(); k += 3) {  // anchors of the closed blob (count 18)
     if (k >= 18) break;
@@ -245,7 +248,7 @@ TEST(SkinRig, BaselinesMatchTheirDefinitions) {
   }
   double w[4];
   shepard_weights(kHandles, 4, &s.points[0], 1, 2.0, w);  // anchor 0's weights
-  const double hx = s.points[2], hy = s.points[3];         // its outgoing handle (point 1)
+  const double hx = s.points[2], hy = s.points[3];        // its outgoing handle (point 1)
   const double mx = w[0] * (0 * hx - 1 * hy + 22) + (1 - w[0]) * hx;
   EXPECT_NEAR(interp[2], mx, 1e-9);
 }

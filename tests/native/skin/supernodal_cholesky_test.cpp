@@ -96,8 +96,7 @@ struct Factored {
 // Solves A x = b with the supernodal Cholesky and with Eigen's SimplicialLDLT, and compares:
 // each relative residual ≤ residual_tolerance, the two solutions within solution_tolerance
 // (relative), and the factor against SimplicialLLT of the same postordered matrix.
-void expect_agrees_with_eigen(const SpMat& A, double residual_tolerance, double solution_tolerance,
-                              unsigned seed = 1) {
+void expect_agrees_with_eigen(const SpMat& A, double residual_tolerance, double solution_tolerance, unsigned seed = 1) {
   const int n = int(A.rows());
   SupernodalCholesky cholesky;
   ASSERT_TRUE(cholesky.factorize(A));

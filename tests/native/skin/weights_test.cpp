@@ -62,8 +62,10 @@ Eigen::VectorXd unconstrained_biharmonic(const Mesh& m, const std::vector<int32_
   for (int c = 0; c < Q.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(Q, c); it; ++it) {
       if (slot[it.row()] < 0) continue;
-      if (slot[c] >= 0) t.emplace_back(slot[it.row()], slot[c], it.value());
-      else if (c == handles[j]) rhs[slot[it.row()]] -= it.value();
+      if (slot[c] >= 0)
+        t.emplace_back(slot[it.row()], slot[c], it.value());
+      else if (c == handles[j])
+        rhs[slot[it.row()]] -= it.value();
     }
   Eigen::SparseMatrix<double> Qff(free.size(), free.size());
   Qff.setFromTriplets(t.begin(), t.end());
@@ -174,7 +176,7 @@ TEST_P(WeightsOnMeshes, BbwSatisfiesTheKktConditionsOfItsQuadraticProgram) {
   const std::vector<int32_t> handles = interior_handles(mesh);
   const int h = int(handles.size());
   BbwOptions options;
-  options.partition_of_unity = false;  // the raw QP optimum
+  options.partition_of_unity = false;   // the raw QP optimum
   options.multiplier_tolerance = 1e-4;  // near-exact multiplier signs (the default trades them for speed)
   std::vector<double> W(size_t(mesh.nv()) * h);
   const WeightsReport r = bbw_weights(mesh.view(), handles.data(), h, options, W.data());
@@ -303,8 +305,8 @@ TEST_P(WeightsOnMeshes, InterpolationAtVerticesAndCentroids) {
   std::vector<double> centroids;
   for (int t = 0; t < mesh.nf(); ++t)
     for (int a = 0; a < 2; ++a)
-      centroids.push_back((mesh.V[2 * mesh.F[3 * t] + a] + mesh.V[2 * mesh.F[3 * t + 1] + a] +
-                           mesh.V[2 * mesh.F[3 * t + 2] + a]) / 3);
+      centroids.push_back(
+          (mesh.V[2 * mesh.F[3 * t] + a] + mesh.V[2 * mesh.F[3 * t + 1] + a] + mesh.V[2 * mesh.F[3 * t + 2] + a]) / 3);
   std::vector<double> at_centroids(size_t(mesh.nf()) * h);
   locate_and_interpolate(grid, mesh.view(), W.data(), h, centroids.data(), mesh.nf(), at_centroids.data());
   for (int t = 0; t < mesh.nf(); ++t)
@@ -328,7 +330,9 @@ TEST_P(WeightsOnMeshes, InterpolationAtVerticesAndCentroids) {
 TEST(Weights, BadInputIsReportedByName) {
   const Mesh good = grid_mesh(3, false);
   const std::vector<int32_t> handles = {0, 5};
-  auto error = [&](Mesh m, std::vector<int32_t> h) { return validate_weights_input(m.view(), h.data(), int(h.size())); };
+  auto error = [&](Mesh m, std::vector<int32_t> h) {
+    return validate_weights_input(m.view(), h.data(), int(h.size()));
+  };
   EXPECT_EQ(error(good, handles), "");
 
   Mesh m = good;
@@ -369,7 +373,8 @@ TEST(Weights, BadInputIsReportedByName) {
   EXPECT_NE(bbw_weights(good.view(), handles.data(), 2, bad, W.data()).error.find("max iterations"), std::string::npos);
   bad = BbwOptions{};
   bad.bound_tolerance = -1;
-  EXPECT_NE(bbw_weights(good.view(), handles.data(), 2, bad, W.data()).error.find("bound tolerance"), std::string::npos);
+  EXPECT_NE(bbw_weights(good.view(), handles.data(), 2, bad, W.data()).error.find("bound tolerance"),
+            std::string::npos);
   bad = BbwOptions{};
   bad.multiplier_tolerance = NAN;
   EXPECT_NE(bbw_weights(good.view(), handles.data(), 2, bad, W.data()).error.find("multiplier tolerance"),
@@ -378,4 +383,6 @@ TEST(Weights, BadInputIsReportedByName) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RegularAndIrregular, WeightsOnMeshes, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Irregular" : "Regular"; });
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                           return info.param ? "Irregular" : "Regular";
+                         });

@@ -3,8 +3,8 @@
 // OLR Euclidean Boehm knot insertion (adaptive OLR: the Bézier polygons of the leaves of the expansion
 // tree), all computed here independently of the core. On curved meshes point insertion must keep the
 // interpolation and tangency properties of b/Surf §4.1.3.
-#include "common/geometry.h"
 #include "surface/curves.h"
+#include "common/geometry.h"
 #include "surface/tangent.h"
 #include "test_meshes.h"
 
@@ -84,7 +84,6 @@ double distance_to_polyline(const Vec3& q, const std::vector<Vec3>& pts) {
 
 // ---- Mesh helpers -------------------------------------------------------------------------------
 
-
 Vec3 pos(const TriMesh& mesh, const MeshPoint& p) { return eval_position(mesh, p); }
 
 // Angle between two tangents at p (the second expressed on the first one's face).
@@ -136,7 +135,8 @@ TEST(SurfaceCurves, OlrUniformIsBoehmKnotInsertionOnAPlane) {
       ASSERT_EQ(points.size(), expected.size()) << "levels " << levels;
       ASSERT_EQ(expected.size(), (size_t(1) << levels) + 3);
       for (size_t i = 0; i < points.size(); ++i)
-        EXPECT_NEAR((pos(plane.mesh, points[i]) - expected[i]).norm(), 0, 1e-9) << "levels " << levels << " point " << i;
+        EXPECT_NEAR((pos(plane.mesh, points[i]) - expected[i]).norm(), 0, 1e-9)
+            << "levels " << levels << " point " << i;
     }
   }
 }
@@ -192,8 +192,10 @@ TEST(SurfaceCurves, SplitIsDeCasteljauSubdivisionOnAPlane) {
         const Vec3 el[4] = {P[0], blossom(P, 0, 0, t), blossom(P, 0, t, t), bezier(P, t)};
         const Vec3 er[4] = {bezier(P, t), blossom(P, t, t, 1), blossom(P, t, 1, 1), P[3]};
         for (int i = 0; i < 4; ++i) {
-          EXPECT_NEAR((pos(plane.mesh, left[i]) - el[i]).norm(), 0, 1e-7) << config.name() << " t=" << t << " left " << i;
-          EXPECT_NEAR((pos(plane.mesh, right[i]) - er[i]).norm(), 0, 1e-7) << config.name() << " t=" << t << " right " << i;
+          EXPECT_NEAR((pos(plane.mesh, left[i]) - el[i]).norm(), 0, 1e-7)
+              << config.name() << " t=" << t << " left " << i;
+          EXPECT_NEAR((pos(plane.mesh, right[i]) - er[i]).norm(), 0, 1e-7)
+              << config.name() << " t=" << t << " right " << i;
         }
       }
   }
@@ -238,7 +240,8 @@ TEST(SurfaceCurves, TraceFollowsTheEuclideanBezierOnAPlane) {
         bool shared = false;
         for (int f : {polyline[i].face, polyline[i + 1].face}) {
           MeshPoint a, b;
-          shared = shared || (point_in_face(plane.mesh, polyline[i], f, a) && point_in_face(plane.mesh, polyline[i + 1], f, b));
+          shared = shared ||
+                   (point_in_face(plane.mesh, polyline[i], f, a) && point_in_face(plane.mesh, polyline[i + 1], f, b));
         }
         EXPECT_TRUE(shared) << "points " << i << ", " << i + 1;
       }
@@ -327,8 +330,8 @@ TEST(SurfaceCurves, OlrAdaptiveEmitsTheLeavesBezierPolygonsOnAPlane) {
       double worst_turn = 0;
       for (size_t i = 1; i + 1 < got.size(); ++i) {
         const double t = turn(got[i - 1], got[i], got[i + 1]);
-        EXPECT_LT(t, options.angle) << what << ": point " << i << " of " << got.size() << " turns by "
-                                    << t * 180 / kPi << "°";
+        EXPECT_LT(t, options.angle) << what << ": point " << i << " of " << got.size() << " turns by " << t * 180 / kPi
+                                    << "°";
         worst_turn = std::max(worst_turn, t);
       }
       ASSERT_EQ(got.size(), expected.size())
@@ -365,9 +368,9 @@ bool on_straightest(const TriMesh& mesh, const MeshPoint& p, const Tangent& dir,
 // geodesic is no longer shortest. Tangent deviations are allowed only with that evidence, and counted.
 struct SplitCounts {
   int cases = 0;
-  int shorter_arm = 0;   // (a): an end tangent moved, the new arm is shorter than the sub-path
-  int longer_path = 0;   // (a): an end tangent moved, the search found a longer geodesic than the sub-path
-  int inner_kinks = 0;   // (b): kink > 1e-3 rad at P_t, the handles on one straightest geodesic
+  int shorter_arm = 0;  // (a): an end tangent moved, the new arm is shorter than the sub-path
+  int longer_path = 0;  // (a): an end tangent moved, the search found a longer geodesic than the sub-path
+  int inner_kinks = 0;  // (b): kink > 1e-3 rad at P_t, the handles on one straightest geodesic
   double worst_end = 0, worst_kink = 0;
 };
 
@@ -380,7 +383,8 @@ void check_split_on(const TriMesh& mesh, const std::vector<ControlPolygon>& poly
     const ControlPolygon& control = polygons[n];
     for (const Config& config : kConfigs)
       for (double t : {0.3, 0.45, 0.7}) {
-        SCOPED_TRACE(std::string(what) + " polygon " + std::to_string(n) + " " + config.name() + " t=" + std::to_string(t));
+        SCOPED_TRACE(std::string(what) + " polygon " + std::to_string(n) + " " + config.name() +
+                     " t=" + std::to_string(t));
         ++counts.cases;
         ControlPolygon left, right;
         tracer.split(control, t, config.options(), left, right);
@@ -410,12 +414,14 @@ void check_split_on(const TriMesh& mesh, const std::vector<ControlPolygon>& poly
         // returned a locally shortest path although the sub-path is a shorter one).
         const double d0 = path_length(mesh, p0l) - t * path_length(mesh, p01);
         const double d3 = path_length(mesh, pr3) - (1 - t) * path_length(mesh, p23);
-        for (const auto& [angle, delta, end] : {std::tuple<double, double, const char*>{at_p0, d0, "P0"}, {at_p3, d3, "P3"}}) {
+        for (const auto& [angle, delta, end] :
+             {std::tuple<double, double, const char*>{at_p0, d0, "P0"}, {at_p3, d3, "P3"}}) {
           if (angle < 1e-6) {
             EXPECT_NEAR(delta, 0, tol) << end;
             continue;
           }
-          EXPECT_GT(std::abs(delta), 1e-12 * mesh.scale) << end << " tangent moved by " << angle << " on the same geodesic";
+          EXPECT_GT(std::abs(delta), 1e-12 * mesh.scale)
+              << end << " tangent moved by " << angle << " on the same geodesic";
           ++(delta < 0 ? counts.shorter_arm : counts.longer_path);
           counts.worst_end = std::max(counts.worst_end, angle);
         }
@@ -423,25 +429,27 @@ void check_split_on(const TriMesh& mesh, const std::vector<ControlPolygon>& poly
         ASSERT_TRUE(path(left[2], left[3], arm_in));
         ASSERT_TRUE(path(right[0], right[1], arm_out));
         ASSERT_TRUE(path(left[3], left[2], back));
-        const Tangent in = end_tangent(mesh, arm_in), out = start_tangent(mesh, arm_out), away = start_tangent(mesh, back);
+        const Tangent in = end_tangent(mesh, arm_in), out = start_tangent(mesh, arm_out),
+                      away = start_tangent(mesh, back);
         ASSERT_GT(in.dir.norm(), 0);
         ASSERT_GT(out.dir.norm(), 0);
         const double kink = turning_angle(mesh, left[3], in, out);
         if (kink < 1e-3) continue;
         const bool left_straight =
             on_straightest(mesh, left[3], {out.face, -out.dir}, path_length(mesh, back), left[2], 1e-7 * mesh.scale);
-        const bool right_straight =
-            on_straightest(mesh, left[3], {away.face, -away.dir}, path_length(mesh, arm_out), right[1], 1e-7 * mesh.scale);
+        const bool right_straight = on_straightest(mesh, left[3], {away.face, -away.dir}, path_length(mesh, arm_out),
+                                                   right[1], 1e-7 * mesh.scale);
         EXPECT_TRUE(left_straight || right_straight) << "kink " << kink << " rad at P_t not explained";
         ++counts.inner_kinks;
         counts.worst_kink = std::max(counts.worst_kink, kink);
       }
   }
-  std::printf("  [%s] split, %d cases: end tangent moved %d times by a shorter and %d by a longer geodesic to the new "
-              "handle (worst %.4f rad); kink > 1e-3 rad at P_t %d times, handles on one straightest geodesic (worst "
-              "%.4f rad)\n",
-              what, counts.cases, counts.shorter_arm, counts.longer_path, counts.worst_end, counts.inner_kinks,
-              counts.worst_kink);
+  std::printf(
+      "  [%s] split, %d cases: end tangent moved %d times by a shorter and %d by a longer geodesic to the new "
+      "handle (worst %.4f rad); kink > 1e-3 rad at P_t %d times, handles on one straightest geodesic (worst "
+      "%.4f rad)\n",
+      what, counts.cases, counts.shorter_arm, counts.longer_path, counts.worst_end, counts.inner_kinks,
+      counts.worst_kink);
 }
 
 // Control polygons made of straightest geodesic hops of about `hop` from a random start, so that

@@ -37,7 +37,9 @@ double dist3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-std::vector<double> geodesic(const Mesh& m, int source) { return exact_geodesic_distances(m.p.data(), m.nv(), m.t.data(), m.nf(), source); }
+std::vector<double> geodesic(const Mesh& m, int source) {
+  return exact_geodesic_distances(m.p.data(), m.nv(), m.t.data(), m.nf(), source);
+}
 
 // Each triangle of `coarse` split into n*n similar triangles (vertices welded by position), same orientation.
 Mesh subdivide(const Mesh& coarse, int n) {
@@ -78,7 +80,8 @@ int find_vertex(const Mesh& m, double x, double y, double z) {
 // Planar n x n grid over [x0, x0 + w] x [y0, y0 + w] minus cells where `keep_cell` is false, random
 // diagonals, interior vertices (not on the domain boundary, not in `fixed`) jittered by up to `jitter`
 // cell sizes.
-Mesh planar_grid(int n, double w, const std::function<bool(double, double)>& keep_cell, double jitter, unsigned seed, const std::vector<std::array<double, 2>>& fixed) {
+Mesh planar_grid(int n, double w, const std::function<bool(double, double)>& keep_cell, double jitter, unsigned seed,
+                 const std::vector<std::array<double, 2>>& fixed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
   const double h = w / n;
@@ -113,7 +116,8 @@ Mesh planar_grid(int n, double w, const std::function<bool(double, double)>& kee
     if (c == 1) boundary[e.first] = boundary[e.second] = 1;
   for (int v = 0; v < m.nv(); ++v) {
     bool pinned = boundary[v];
-    for (const auto& q : fixed) pinned = pinned || (std::abs(m.p[3 * v] - q[0]) < 1e-12 && std::abs(m.p[3 * v + 1] - q[1]) < 1e-12);
+    for (const auto& q : fixed)
+      pinned = pinned || (std::abs(m.p[3 * v] - q[0]) < 1e-12 && std::abs(m.p[3 * v + 1] - q[1]) < 1e-12);
     const double dx = u(rng) * jitter * h, dy = u(rng) * jitter * h;
     if (pinned) continue;
     m.p[3 * v] += dx;
@@ -228,7 +232,8 @@ TEST(ExactGeodesic, JitteredPlanarGridIsEuclidean) {
   ASSERT_EQ(m.nf(), 2 * 12 * 12);
   for (int source : {0, m.nv() / 2 + 3, m.nv() - 1}) {
     const auto d = geodesic(m, source);
-    for (int v = 0; v < m.nv(); ++v) EXPECT_NEAR(d[v], dist3(m.at(source), m.at(v)), 1e-9) << "source " << source << " vertex " << v;
+    for (int v = 0; v < m.nv(); ++v)
+      EXPECT_NEAR(d[v], dist3(m.at(source), m.at(v)), 1e-9) << "source " << source << " vertex " << v;
   }
 }
 
@@ -265,7 +270,9 @@ Mesh unit_cube() {
 double cube_corner_distance(double x, double y, double z) {
   const double eps = 1e-12;
   if (x < eps || y < eps || z < eps) return std::sqrt(x * x + y * y + z * z);
-  auto far = [](double u, double v) { return std::sqrt((1 + std::min(u, v)) * (1 + std::min(u, v)) + std::max(u, v) * std::max(u, v)); };
+  auto far = [](double u, double v) {
+    return std::sqrt((1 + std::min(u, v)) * (1 + std::min(u, v)) + std::max(u, v) * std::max(u, v));
+  };
   double d = INFINITY;
   if (x > 1 - eps) d = std::min(d, far(y, z));
   if (y > 1 - eps) d = std::min(d, far(x, z));
@@ -280,7 +287,8 @@ TEST(ExactGeodesic, CubeTwelveTriangles) {
   EXPECT_NEAR(d[7], std::sqrt(5.0), 1e-12);  // opposite corner
   EXPECT_NEAR(d[1], 1.0, 1e-12);
   EXPECT_NEAR(d[3], std::sqrt(2.0), 1e-12);
-  for (int v = 0; v < 8; ++v) EXPECT_NEAR(d[v], cube_corner_distance(m.p[3 * v], m.p[3 * v + 1], m.p[3 * v + 2]), 1e-12) << v;
+  for (int v = 0; v < 8; ++v)
+    EXPECT_NEAR(d[v], cube_corner_distance(m.p[3 * v], m.p[3 * v + 1], m.p[3 * v + 2]), 1e-12) << v;
   // Every corner as source: the opposite corner is sqrt(5) away.
   for (int s = 0; s < 8; ++s) EXPECT_NEAR(geodesic(m, s)[7 - s], std::sqrt(5.0), 1e-12) << s;
 }
@@ -290,12 +298,13 @@ TEST(ExactGeodesic, SubdividedCube) {
   ASSERT_EQ(m.nv(), 98);
   const int source = find_vertex(m, 0, 0, 0);
   const auto d = geodesic(m, source);
-  for (int v = 0; v < m.nv(); ++v) EXPECT_NEAR(d[v], cube_corner_distance(m.p[3 * v], m.p[3 * v + 1], m.p[3 * v + 2]), 1e-9) << v;
+  for (int v = 0; v < m.nv(); ++v)
+    EXPECT_NEAR(d[v], cube_corner_distance(m.p[3 * v], m.p[3 * v + 1], m.p[3 * v + 2]), 1e-9) << v;
   EXPECT_NEAR(d[find_vertex(m, 1, 1, 1)], std::sqrt(5.0), 1e-9);
-  EXPECT_NEAR(d[find_vertex(m, 1, 0.5, 0.5)], std::sqrt(2.5), 1e-9);   // center of a far face
-  EXPECT_NEAR(d[find_vertex(m, 1, 0.5, 1)], std::sqrt(3.25), 1e-9);    // midpoint of a far edge
-  EXPECT_NEAR(d[find_vertex(m, 0.5, 0.5, 0)], std::sqrt(0.5), 1e-9);   // center of a near face
-  EXPECT_NEAR(d[find_vertex(m, 1, 1, 0.5)], std::sqrt(3.25), 1e-9);    // midpoint of the edge x = y = 1
+  EXPECT_NEAR(d[find_vertex(m, 1, 0.5, 0.5)], std::sqrt(2.5), 1e-9);  // center of a far face
+  EXPECT_NEAR(d[find_vertex(m, 1, 0.5, 1)], std::sqrt(3.25), 1e-9);   // midpoint of a far edge
+  EXPECT_NEAR(d[find_vertex(m, 0.5, 0.5, 0)], std::sqrt(0.5), 1e-9);  // center of a near face
+  EXPECT_NEAR(d[find_vertex(m, 1, 1, 0.5)], std::sqrt(3.25), 1e-9);   // midpoint of the edge x = y = 1
   // From the center of a face, the center of the opposite face: 1/2 + 1 + 1/2 over a side face.
   const auto dc = geodesic(m, find_vertex(m, 0.5, 0.5, 0));
   EXPECT_NEAR(dc[find_vertex(m, 0.5, 0.5, 1)], 2.0, 1e-9);
@@ -365,10 +374,12 @@ Mesh l_prism(double h) {
     const int nu = int(std::lround(std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) / h));
     const int nv = int(std::lround(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) / h));
     auto at = [&](int i, int j) {
-      return vertex(o[0] + u[0] * i / nu + v[0] * j / nv, o[1] + u[1] * i / nu + v[1] * j / nv, o[2] + u[2] * i / nu + v[2] * j / nv);
+      return vertex(o[0] + u[0] * i / nu + v[0] * j / nv, o[1] + u[1] * i / nu + v[1] * j / nv,
+                    o[2] + u[2] * i / nu + v[2] * j / nv);
     };
     for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j) m.t.insert(m.t.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      for (int j = 0; j < nv; ++j)
+        m.t.insert(m.t.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
   };
   for (double z : {0.0, 1.0})
     for (const auto& sq : std::vector<std::array<double, 2>>{{0, 0}, {1, 0}, {0, 1}})
@@ -424,11 +435,14 @@ TEST(ExactGeodesic, RegularTetrahedron) {
   const auto d = geodesic(m, source);
   // Closed form: straight on the faces through A; on BCD the best unfolding over BC, CD or DB. Unfolded
   // over BC, the face BCD becomes BCD' with D' = B + C - A (the two faces form a rhombus).
-  auto unfolded = [&](const std::array<double, 3>& P, const std::array<double, 3>& X, const std::array<double, 3>& Y, const std::array<double, 3>& Z) {
+  auto unfolded = [&](const std::array<double, 3>& P, const std::array<double, 3>& X, const std::array<double, 3>& Y,
+                      const std::array<double, 3>& Z) {
     // P = x X + y Y + z Z on face XYZ; unfold over XY: Z -> X + Y - A.
     std::array<double, 3> e1{}, e2{}, w{};
     for (int c = 0; c < 3; ++c) e1[c] = Y[c] - X[c], e2[c] = Z[c] - X[c], w[c] = P[c] - X[c];
-    auto dot = [](const std::array<double, 3>& a, const std::array<double, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    auto dot = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    };
     // Barycentric coordinates of P in XYZ.
     const double d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2), d20 = dot(w, e1), d21 = dot(w, e2);
     const double den = d00 * d11 - d01 * d01;
@@ -437,10 +451,12 @@ TEST(ExactGeodesic, RegularTetrahedron) {
     for (int c = 0; c < 3; ++c) Q[c] = x * X[c] + y * Y[c] + z * (X[c] + Y[c] - A[c]);
     return dist3(A, Q);
   };
-  auto on_plane = [](const std::array<double, 3>& P, const std::array<double, 3>& X, const std::array<double, 3>& Y, const std::array<double, 3>& Z) {
+  auto on_plane = [](const std::array<double, 3>& P, const std::array<double, 3>& X, const std::array<double, 3>& Y,
+                     const std::array<double, 3>& Z) {
     std::array<double, 3> e1, e2, w;
     for (int c = 0; c < 3; ++c) e1[c] = Y[c] - X[c], e2[c] = Z[c] - X[c], w[c] = P[c] - X[c];
-    const std::array<double, 3> n = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const std::array<double, 3> n = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                                     e1[0] * e2[1] - e1[1] * e2[0]};
     return std::abs(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) < 1e-12;
   };
   for (int v = 0; v < m.nv(); ++v) {
@@ -470,8 +486,8 @@ TEST(ExactGeodesic, RegularOctahedron) {
   const Mesh m = subdivide(coarse, 2);
   const auto d = geodesic(m, find_vertex(m, 0, 0, 1));
   EXPECT_NEAR(d[find_vertex(m, 0, 0, -1)], std::sqrt(6.0), 1e-9);
-  EXPECT_NEAR(d[find_vertex(m, 0.5, 0, 0.5)], e / 2, 1e-9);            // midpoint of an upper edge
-  EXPECT_NEAR(d[find_vertex(m, 0.5, 0.5, 0)], h, 1e-9);                // midpoint of an equator edge
+  EXPECT_NEAR(d[find_vertex(m, 0.5, 0, 0.5)], e / 2, 1e-9);  // midpoint of an upper edge
+  EXPECT_NEAR(d[find_vertex(m, 0.5, 0.5, 0)], h, 1e-9);      // midpoint of an equator edge
   // Midpoint of a lower edge S-a: in the rhombus N a S b laid flat (a, b at (-+e/2, 0), N, S at
   // (0, +-h)) it sits at (-e/4, -h/2): sqrt(e^2/16 + 9 h^2/4) = sqrt(3.5).
   EXPECT_NEAR(d[find_vertex(m, 0.5, 0, -0.5)], std::sqrt(3.5), 1e-9);

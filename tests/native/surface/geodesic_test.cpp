@@ -1,7 +1,7 @@
 // Mesh building and locally shortest paths against closed forms.
 #include "surface/geodesic.h"
-#include "surface/unfold.h"
 #include "surface/tangent.h"
+#include "surface/unfold.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -66,7 +66,8 @@ TEST(SurfaceMesh, OrientsFacesAndKeepsFilePoints) {
 
 TEST(SurfaceMesh, ReportsNonManifoldEdgesAndSplitsBowties) {
   // Three faces on one edge (0, 1), and two fans touching at vertex 5 only.
-  const std::vector<double> p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 3, 0, 0, 4, 1, 0, 4, -1, 0, 2, 1, 0, 2, -1, 0};
+  const std::vector<double> p = {0, 0, 0, 1, 0, 0, 0, 1,  0, 0, -1, 0, 0, 0,  1,
+                                 3, 0, 0, 4, 1, 0, 4, -1, 0, 2, 1,  0, 2, -1, 0};
   const std::vector<int> t = {0, 1, 2, 1, 0, 3, 0, 1, 4, 5, 6, 7, 5, 8, 9};
   TriMesh mesh;
   std::string error;
@@ -113,8 +114,7 @@ TEST(SurfaceMesh, NumbersNeighboursCloseAndKeepsFileIndices) {
     const MeshPoint p{f, Vec2(0.2, 0.7)};
     Vec3 expected = Vec3::Zero();
     const double w[3] = {0.1, 0.2, 0.7};
-    for (int k = 0; k < 3; ++k)
-      expected += w[k] * Vec3(file.positions.data() + 3 * file.triangles[3 * f + k]);
+    for (int k = 0; k < 3; ++k) expected += w[k] * Vec3(file.positions.data() + 3 * file.triangles[3 * f + k]);
     EXPECT_NEAR((eval_position(mesh, to_mesh_point(mesh, p)) - expected).norm(), 0, 1e-15) << "file face " << f;
     const MeshPoint back = to_file_point(mesh, to_mesh_point(mesh, p));
     EXPECT_EQ(back.face, f);
@@ -182,7 +182,9 @@ TEST(SearchGraph, NumbersEveryEdgeOnceFromBothSides) {
         EXPECT_EQ(graph.halfedge_edge[h], e);
       }
     EXPECT_EQ(graph.edges, boundary + interior / 2);
-    for (int e = 0; e < graph.edges; ++e) EXPECT_EQ(seen[e], mesh.adjacency[graph.edge_halfedge[e] / 3][graph.edge_halfedge[e] % 3] < 0 ? 1 : 2) << "edge " << e;
+    for (int e = 0; e < graph.edges; ++e)
+      EXPECT_EQ(seen[e], mesh.adjacency[graph.edge_halfedge[e] / 3][graph.edge_halfedge[e] % 3] < 0 ? 1 : 2)
+          << "edge " << e;
   }
 }
 
@@ -213,13 +215,15 @@ TEST(ShortestPath, StraightensThroughKnownPaths) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 100; ++trial) {
     const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
-    const MeshPoint c = trial % 2 ? vertex_point(mesh, static_cast<int>(rng() % mesh.positions.size())) : random_point(mesh, rng);
+    const MeshPoint c =
+        trial % 2 ? vertex_point(mesh, static_cast<int>(rng() % mesh.positions.size())) : random_point(mesh, rng);
     std::vector<GeodesicPath> pieces(2);
     ASSERT_TRUE(solver.shortest_path(a, c, pieces[0]));
     ASSERT_TRUE(solver.shortest_path(c, b, pieces[1]));
     GeodesicPath path;
     ASSERT_TRUE(solver.straighten_through(pieces, path)) << "trial " << trial;
-    EXPECT_NEAR(path_length(mesh, path), (eval_position(mesh, b) - eval_position(mesh, a)).norm(), 1e-9) << "trial " << trial;
+    EXPECT_NEAR(path_length(mesh, path), (eval_position(mesh, b) - eval_position(mesh, a)).norm(), 1e-9)
+        << "trial " << trial;
     for (size_t i = 0; i + 1 < path.strip.size(); ++i) EXPECT_GE(edge_to(mesh, path.strip[i], path.strip[i + 1]), 0);
   }
   const TriMesh cube = testing::build(testing::cube(4));
@@ -261,8 +265,9 @@ TEST(ShortestPath, FlipsAZipperOfCollinearVerticesAtOnce) {
   // up. Semi-star flips alone take the path past one vertex of the row at a time (18 flips).
   const double cell = 1.0 / 24, row = 12 * cell;
   PathStats stats;
-  const double length = straighten_via({{0.1, row + 0.3 * cell}, {0.15, row - 0.3 * cell}, {0.85, row - 0.3 * cell}, {0.9, row + 0.3 * cell}},
-                                       false, stats);
+  const double length = straighten_via(
+      {{0.1, row + 0.3 * cell}, {0.15, row - 0.3 * cell}, {0.85, row - 0.3 * cell}, {0.9, row + 0.3 * cell}}, false,
+      stats);
   EXPECT_NEAR(length, 0.8, 1e-9);
   EXPECT_LE(stats.accepted_flips, 5);
   EXPECT_EQ(stats.frozen_vertices, 0);
@@ -333,7 +338,7 @@ TEST(UnfoldStrip, PiecesMovedRigidlyAndJoinedMatchAFreshLayout) {
   unfold_strip(mesh, strip, fresh);
   const size_t m = strip.size() / 2;
   unfold_strip(mesh, std::vector<int>(strip.begin() + (m - 1), strip.end()), tail);  // from face m-1, its own frame
-  ASSERT_GT((tail.corners[0][1] - fresh.corners[m - 1][1]).norm(), 0.1);            // (a different frame indeed)
+  ASSERT_GT((tail.corners[0][1] - fresh.corners[m - 1][1]).norm(), 0.1);             // (a different frame indeed)
   append_moved(u, fresh, 0, m, PlaneMotion{});
   append_moved(u, tail, 1, tail.faces.size(), PlaneMotion::between(tail.corners[0], u.corners.back()));
   join(mesh, u, m);
@@ -365,14 +370,15 @@ TEST(UnfoldStrip, LaysPointsOfSpaceInAFacesPlane) {
   const TriMesh plane = testing::build(testing::planar_grid(12));
   GeodesicSolver solver(plane);
   GeodesicPath path;
-  ASSERT_TRUE(solver.shortest_path(testing::point_at(plane, Vec3(0.05, 0.1, 0)), testing::point_at(plane, Vec3(0.93, 0.88, 0)), path));
+  ASSERT_TRUE(solver.shortest_path(testing::point_at(plane, Vec3(0.05, 0.1, 0)),
+                                   testing::point_at(plane, Vec3(0.93, 0.88, 0)), path));
   ASSERT_GE(path.strip.size(), 10u);
   UnfoldedStrip u;
   unfold_strip(plane, path.strip, u);
-  const PlaneMotion motion = PlaneMotion::between(
-      {Vec2(plane.positions[plane.triangles[u.faces[0]][0]].head<2>()), Vec2(plane.positions[plane.triangles[u.faces[0]][1]].head<2>()),
-       Vec2(plane.positions[plane.triangles[u.faces[0]][2]].head<2>())},
-      u.corners[0]);
+  const PlaneMotion motion = PlaneMotion::between({Vec2(plane.positions[plane.triangles[u.faces[0]][0]].head<2>()),
+                                                   Vec2(plane.positions[plane.triangles[u.faces[0]][1]].head<2>()),
+                                                   Vec2(plane.positions[plane.triangles[u.faces[0]][2]].head<2>())},
+                                                  u.corners[0]);
   for (const Vec3& x : {Vec3(0.05, 0.1, 0), Vec3(0.5, 0.5, 0), Vec3(0.93, 0.88, 0), Vec3(0.2, 0.9, 0)}) {
     for (size_t i : {size_t{0}, u.faces.size() / 2, u.faces.size() - 1}) {
       Vec2 at;
@@ -457,9 +463,9 @@ TEST(ShortestPath, MatchesUnfoldingsOnACube) {
     double length;
   } cases[] = {
       {{0.5, 0.5, 0}, {1, 0.5, 0.5}, 1.0},                 // across one edge
-      {{0, 0, 0}, {1, 1, 1}, std::sqrt(5.0)},               // corner to opposite corner
-      {{0.5, 0.5, 0}, {0.5, 0.5, 1}, 2.0},                  // opposite face centres
-      {{0.25, 0, 0}, {0, 0.75, 1}, std::sqrt(1.0 + 1.0)},   // wraps around the edge x = y = 0... see below
+      {{0, 0, 0}, {1, 1, 1}, std::sqrt(5.0)},              // corner to opposite corner
+      {{0.5, 0.5, 0}, {0.5, 0.5, 1}, 2.0},                 // opposite face centres
+      {{0.25, 0, 0}, {0, 0.75, 1}, std::sqrt(1.0 + 1.0)},  // wraps around the edge x = y = 0... see below
   };
   // The last case: from (0.25, 0, 0) on the bottom edge to (0, 0.75, 1) on the top edge of face x = 0:
   // unfold faces y = 0 and x = 0 into one plane: (0.25, 0) -> (-0.75, 1), length sqrt(1 + 1).

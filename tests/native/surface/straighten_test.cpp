@@ -2,8 +2,8 @@
 // it must give: the semi-star flip takes a vertex's other side (or freezes a saddle), a zipper takes
 // in exactly the vertices that still block, a chord's faces are those the straight line crosses,
 // apply lays the new strip as a fresh layout would, and a pass is what the whole loop repeats.
-#include "surface/geodesic.h"
 #include "surface/straighten.h"
+#include "surface/geodesic.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -28,7 +28,8 @@ MeshPoint centroid(int face) { return {face, Vec2(1.0 / 3, 1.0 / 3)}; }
 
 // Consecutive faces share an edge and no face comes twice.
 void expect_strip(const TriMesh& mesh, const std::vector<int>& strip) {
-  for (size_t i = 0; i + 1 < strip.size(); ++i) EXPECT_GE(edge_to(mesh, strip[i], strip[i + 1]), 0) << "faces " << i << ", " << i + 1;
+  for (size_t i = 0; i + 1 < strip.size(); ++i)
+    EXPECT_GE(edge_to(mesh, strip[i], strip[i + 1]), 0) << "faces " << i << ", " << i + 1;
   std::vector<int> sorted = strip;
   std::sort(sorted.begin(), sorted.end());
   EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a face twice";
@@ -120,7 +121,8 @@ TEST(StraightenerFlip, TakesTheOtherSemiStarOfAFlatVertex) {
 Arrays saddle() {
   Arrays a;
   a.positions = {0, 0, 0};
-  for (int i = 0; i < 6; ++i) a.positions.insert(a.positions.end(), {std::cos(kPi * i / 3), std::sin(kPi * i / 3), i % 2 ? -0.8 : 0.8});
+  for (int i = 0; i < 6; ++i)
+    a.positions.insert(a.positions.end(), {std::cos(kPi * i / 3), std::sin(kPi * i / 3), i % 2 ? -0.8 : 0.8});
   for (int i = 0; i < 6; ++i) a.triangles.insert(a.triangles.end(), {0, 1 + i, 1 + (i + 1) % 6});
   return a;
 }
@@ -173,9 +175,9 @@ TEST(StraightenerZipper, TakesInExactlyTheVerticesThatStillBlock) {
   // bends down onto the row, runs along it and up again.
   const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
   const double cell = 1.0 / 24, row = 12 * cell;
-  const std::vector<int> strip = strip_through(
-      mesh, {at_xy(mesh, 0.1, row + 0.3 * cell), at_xy(mesh, 0.15, row - 0.3 * cell), at_xy(mesh, 0.85, row - 0.3 * cell),
-             at_xy(mesh, 0.9, row + 0.3 * cell)});
+  const std::vector<int> strip =
+      strip_through(mesh, {at_xy(mesh, 0.1, row + 0.3 * cell), at_xy(mesh, 0.15, row - 0.3 * cell),
+                           at_xy(mesh, 0.85, row - 0.3 * cell), at_xy(mesh, 0.9, row + 0.3 * cell)});
   std::vector<int> marks(mesh.triangles.size(), -1);
   Straightener s(mesh, marks);
   s.begin(at_xy(mesh, 0.1, row + 0.3 * cell), at_xy(mesh, 0.9, row + 0.3 * cell), strip);
@@ -190,16 +192,20 @@ TEST(StraightenerZipper, TakesInExactlyTheVerticesThatStillBlock) {
   const Portal& own = s.unfolded().portals[apices[1].portal];
   const bool v_left = own.left_vertex == v;
   std::vector<int> boundary;  // the strip's vertices on v's side
-  for (const Portal& portal : s.unfolded().portals) boundary.push_back(v_left ? portal.left_vertex : portal.right_vertex);
+  for (const Portal& portal : s.unfolded().portals)
+    boundary.push_back(v_left ? portal.left_vertex : portal.right_vertex);
   auto on_boundary = [&](int w) { return std::find(boundary.begin(), boundary.end(), w) != boundary.end(); };
   const MeshPoint a = at_xy(mesh, 0.1, row + 0.3 * cell), b = at_xy(mesh, 0.9, row + 0.3 * cell);
-  auto position_of = [&](const Apex& x, const MeshPoint& end) { return x.vertex >= 0 ? mesh.positions[x.vertex] : eval_position(mesh, end); };
+  auto position_of = [&](const Apex& x, const MeshPoint& end) {
+    return x.vertex >= 0 ? mesh.positions[x.vertex] : eval_position(mesh, end);
+  };
   const Vec3 from = position_of(apices[0], a), to = position_of(apices[2], b), pv = mesh.positions[v];
   auto side = [&](const Vec3& w) { return orient(from.head<2>(), to.head<2>(), w.head<2>()); };
   std::vector<std::pair<double, int>> row_vertices;
   for (size_t w = 0; w < mesh.positions.size(); ++w) {
     const Vec3& x = mesh.positions[w];
-    if (std::abs(x.y() - row) < 1e-12 && x.x() > from.x() && x.x() < to.x() && side(x) * side(pv) > 0 && on_boundary(static_cast<int>(w)))
+    if (std::abs(x.y() - row) < 1e-12 && x.x() > from.x() && x.x() < to.x() && side(x) * side(pv) > 0 &&
+        on_boundary(static_cast<int>(w)))
       row_vertices.emplace_back(x.x(), static_cast<int>(w));
   }
   std::sort(row_vertices.begin(), row_vertices.end());
@@ -226,7 +232,8 @@ TEST(StraightenerZipper, TakesInExactlyTheVerticesThatStillBlock) {
   expect_fresh_layout(mesh, out, u);
   std::vector<Apex> raw, after;
   EXPECT_LT(s.shorten(u, raw, after, splice.path ? &splice : nullptr), s.length() - 1e-6);
-  for (const Apex& x : after) EXPECT_EQ(std::find(expected.begin(), expected.end(), x.vertex), expected.end()) << x.vertex;
+  for (const Apex& x : after)
+    EXPECT_EQ(std::find(expected.begin(), expected.end(), x.vertex), expected.end()) << x.vertex;
 }
 
 // ---- Chord --------------------------------------------------------------------------------------
@@ -338,7 +345,8 @@ TEST(StraightenerApply, MakesSeveralFlipsAtOnceAsAFreshLayoutWould) {
   const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
   const double cell = 1.0 / 24, row = 12 * cell;
   const MeshPoint a = at_xy(mesh, 0.1, row + 0.3 * cell), b = at_xy(mesh, 0.9, row + 0.3 * cell);
-  const std::vector<int> strip = strip_through(mesh, {a, at_xy(mesh, 0.15, row - 0.3 * cell), at_xy(mesh, 0.85, row - 0.3 * cell), b});
+  const std::vector<int> strip =
+      strip_through(mesh, {a, at_xy(mesh, 0.15, row - 0.3 * cell), at_xy(mesh, 0.85, row - 0.3 * cell), b});
   std::vector<int> marks(mesh.triangles.size(), -1);
   Straightener s(mesh, marks);
   s.begin(a, b, strip);

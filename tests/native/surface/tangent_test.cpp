@@ -1,8 +1,8 @@
 // Straightest geodesics, parallel transport, polar coordinates (tangent.h) and the editing gestures
 // built on them (edit.h), against closed forms: the plane, the unrolled polyhedral cylinder, and the
 // cube, whose corners carry an angle defect of π/2.
-#include "surface/edit.h"
 #include "surface/tangent.h"
+#include "surface/edit.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -18,7 +18,6 @@ namespace {
 using testing::point_at;
 
 Vec3 pos(const TriMesh& mesh, const MeshPoint& p) { return eval_position(mesh, p); }
-
 
 int vertex_at(const TriMesh& mesh, const Vec3& x) {
   for (size_t v = 0; v < mesh.positions.size(); ++v)
@@ -62,7 +61,8 @@ void expect_steps_share_faces(const TriMesh& mesh, const std::vector<MeshPoint>&
     bool shared = false;
     for (int f : candidates) {
       MeshPoint a, b;
-      if (f >= 0 && point_in_face(mesh, points[i], f, a, 1e-7) && point_in_face(mesh, points[i + 1], f, b, 1e-7)) shared = true;
+      if (f >= 0 && point_in_face(mesh, points[i], f, a, 1e-7) && point_in_face(mesh, points[i + 1], f, b, 1e-7))
+        shared = true;
     }
     EXPECT_TRUE(shared) << "steps " << i << ", " << i + 1;
   }
@@ -155,8 +155,8 @@ TEST(SurfaceTangent, StraightestGeodesicUnrollsOnACylinder) {
   // enough to wrap around more than once at shallow angles.
   struct Case {
     double s, z, a, length;
-  } cases[] = {{0.3, 0.25, 0.3, 5.0}, {2.1, 1.7, -0.4, 3.5}, {4.0, 0.9, 2.0, 1.0}, {5.5, 0.1, 0.05, 12.0},
-               {1.0, 1.0, kPi - 0.2, 4.0}, {3.3, 1.9, -1.4, 1.7}};
+  } cases[] = {{0.3, 0.25, 0.3, 5.0},  {2.1, 1.7, -0.4, 3.5},      {4.0, 0.9, 2.0, 1.0},
+               {5.5, 0.1, 0.05, 12.0}, {1.0, 1.0, kPi - 0.2, 4.0}, {3.3, 1.9, -1.4, 1.7}};
   for (const Case& c : cases) {
     const MeshPoint p = point_at(mesh, cyl.at(c.s, c.z));
     StraightestGeodesic g;
@@ -287,7 +287,8 @@ TEST(SurfaceTangent, ParallelTransportAroundACubeCornerRotatesByTheDefect) {
     const Tangent ccw = transport_loop({A, C, B, A}, v);
     EXPECT_NEAR(signed_angle(v, ccw.dir, n), kPi / 2, 1e-9);
   }
-  EXPECT_LT(xa.cross(xb).dot(Vec3(-1, -1, -1)) + xb.cross(xc).dot(Vec3(-1, -1, -1)) + xc.cross(xa).dot(Vec3(-1, -1, -1)), 0);
+  EXPECT_LT(
+      xa.cross(xb).dot(Vec3(-1, -1, -1)) + xb.cross(xc).dot(Vec3(-1, -1, -1)) + xc.cross(xa).dot(Vec3(-1, -1, -1)), 0);
 }
 
 // ---- Polar coordinates --------------------------------------------------------------------------
@@ -471,7 +472,7 @@ TEST(SurfaceEdit, MoveHandleSmoothOnACylinderKeepsLengthAndCollinearity) {
   const TriMesh mesh = testing::build(testing::cylinder(24, 8, 1, 2));
   GeodesicSolver solver(mesh);
   auto on = [&](double phi, double z) { return point_at(mesh, Vec3(std::cos(phi), std::sin(phi), z)); };
-  std::vector<MeshPoint> points = {on(0.0, 0.5), on(0.2, 0.7), on(0.4, 0.9), on(0.6, 1.0),
+  std::vector<MeshPoint> points = {on(0.0, 0.5),  on(0.2, 0.7), on(0.4, 0.9), on(0.6, 1.0),
                                    on(0.8, 1.05), on(1.0, 1.2), on(1.2, 1.3)};
   GeodesicPath before;
   solver.shortest_path(points[3], points[2], before);

@@ -7,11 +7,11 @@
 #include <Eigen/Dense>
 
 #include <cmath>
-#include <limits>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -44,7 +44,8 @@ inline Arrays planar_grid(int n, double size = 1, double jitter = 0.25, unsigned
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const bool interior = i > 0 && j > 0 && i < n && j < n;
-      a.positions.insert(a.positions.end(), {h * (i + (interior ? u(rng) : 0)), h * (j + (interior ? u(rng) : 0)), 0.0});
+      a.positions.insert(a.positions.end(),
+                         {h * (i + (interior ? u(rng) : 0)), h * (j + (interior ? u(rng) : 0)), 0.0});
     }
   auto id = [&](int i, int j) { return j * (n + 1) + i; };
   for (int j = 0; j < n; ++j)
@@ -65,7 +66,8 @@ inline Arrays cube(int n) {
   std::vector<std::array<double, 3>> pts;
   auto vertex = [&](double x, double y, double z) {
     for (size_t i = 0; i < pts.size(); ++i)
-      if (std::abs(pts[i][0] - x) + std::abs(pts[i][1] - y) + std::abs(pts[i][2] - z) < 1e-12) return static_cast<int>(i);
+      if (std::abs(pts[i][0] - x) + std::abs(pts[i][1] - y) + std::abs(pts[i][2] - z) < 1e-12)
+        return static_cast<int>(i);
     pts.push_back({x, y, z});
     return static_cast<int>(pts.size() - 1);
   };
@@ -77,7 +79,8 @@ inline Arrays cube(int n) {
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i) {
         const double s = double(i) / n, t = double(j) / n;
-        ids[j * (n + 1) + i] = vertex(f[0] + s * f[3] + t * f[6], f[1] + s * f[4] + t * f[7], f[2] + s * f[5] + t * f[8]);
+        ids[j * (n + 1) + i] =
+            vertex(f[0] + s * f[3] + t * f[6], f[1] + s * f[4] + t * f[7], f[2] + s * f[5] + t * f[8]);
       }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {

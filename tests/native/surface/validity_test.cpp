@@ -108,7 +108,8 @@ struct Smoothness {
 };
 
 // Indices in `fine` of the points of `coarse` (same 3D position, in order; -1 when absent).
-std::vector<int> match_points(const TriMesh& mesh, const std::vector<MeshPoint>& coarse, const std::vector<MeshPoint>& fine) {
+std::vector<int> match_points(const TriMesh& mesh, const std::vector<MeshPoint>& coarse,
+                              const std::vector<MeshPoint>& fine) {
   const double tol = 1e-12 * mesh.scale;
   std::vector<int> out(coarse.size(), -1);
   size_t from = 0;
@@ -161,7 +162,8 @@ void check_smoothness(CurveTracer& tracer, const ControlPolygon& polygon, const 
     if (turn < 0) continue;  // a degenerate segment
     ++s.interior;
     if (turn <= options.angle) ++s.within;
-    const bool untouched = in_finer[i - 1] >= 0 && in_finer[i] == in_finer[i - 1] + 1 && in_finer[i + 1] == in_finer[i] + 1;
+    const bool untouched =
+        in_finer[i - 1] >= 0 && in_finer[i] == in_finer[i - 1] + 1 && in_finer[i + 1] == in_finer[i] + 1;
     if (!untouched) {
       ++s.capped;
       if (turn > options.angle) ++s.capped_over;
@@ -177,8 +179,8 @@ void check_smoothness(CurveTracer& tracer, const ControlPolygon& polygon, const 
 }
 
 TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
-  const char* meshes[] = {"spot_control_tri.obj", "hand_lowres.obj", "torus.obj", "fertility.obj",
-                          "spot.obj", "mountain.obj", "stanford_bunny.obj", "nefertiti.obj"};
+  const char* meshes[] = {"spot_control_tri.obj", "hand_lowres.obj",    "torus.obj",    "fertility.obj", "spot.obj",
+                          "mountain.obj",         "stanford_bunny.obj", "nefertiti.obj"};
   constexpr int kPolygons = 10;
   Smoothness total[2];  // RDC, OLR adaptive
   for (const char* name : meshes) {
@@ -211,7 +213,8 @@ TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
         for (size_t i = 0; i + 1 < polyline.size(); ++i)
           if (common_face(mesh, polyline[i], polyline[i + 1], scratch) < 0 && breaks++ < 3)
             ADD_FAILURE() << what << ": polyline points " << i << " and " << i + 1 << " share no face ("
-                          << pos(mesh, polyline[i]).transpose() << " / " << pos(mesh, polyline[i + 1]).transpose() << ")";
+                          << pos(mesh, polyline[i]).transpose() << " / " << pos(mesh, polyline[i + 1]).transpose()
+                          << ")";
         EXPECT_EQ(breaks, 0) << what;
         // 3) Smoothness.
         if (config.adaptive)
@@ -232,10 +235,11 @@ TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
   }
   for (int k = 0; k < 2; ++k) {
     const Smoothness& s = total[k];
-    std::printf("  %s adaptive: %d interior points, %.2f%% within 5°; %d (%.2f%%) touched by the max_levels cut, %d of "
-                "them over 5°; worst untouched %.3f°\n",
-                k ? "OLR" : "RDC", s.interior, 100.0 * s.within / std::max(s.interior, 1), s.capped,
-                100.0 * s.capped / std::max(s.interior, 1), s.capped_over, s.worst_uncapped * 180 / kPi);
+    std::printf(
+        "  %s adaptive: %d interior points, %.2f%% within 5°; %d (%.2f%%) touched by the max_levels cut, %d of "
+        "them over 5°; worst untouched %.3f°\n",
+        k ? "OLR" : "RDC", s.interior, 100.0 * s.within / std::max(s.interior, 1), s.capped,
+        100.0 * s.capped / std::max(s.interior, 1), s.capped_over, s.worst_uncapped * 180 / kPi);
     EXPECT_EQ(s.violations, 0) << (k ? "OLR" : "RDC");
   }
 }

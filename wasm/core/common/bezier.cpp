@@ -40,9 +40,8 @@ double gauss_speed(const double* c, double a, double b) {
                               -0.7415311855993944398638648,
                               0.9491079123427585245261897,
                               -0.9491079123427585245261897};
-  static const double w[7] = {0.4179591836734693877551020, 0.3818300505051189449503698,
-                              0.3818300505051189449503698, 0.2797053914892766679014678,
-                              0.2797053914892766679014678, 0.1294849661688696932706114,
+  static const double w[7] = {0.4179591836734693877551020, 0.3818300505051189449503698, 0.3818300505051189449503698,
+                              0.2797053914892766679014678, 0.2797053914892766679014678, 0.1294849661688696932706114,
                               0.1294849661688696932706114};
   const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
   double sum = 0;
@@ -54,8 +53,7 @@ double adaptive_length(const double* c, double a, double b, double whole, double
   const double m = 0.5 * (a + b);
   const double left = gauss_speed(c, a, m), right = gauss_speed(c, m, b);
   if (depth >= 24 || std::abs(left + right - whole) <= tol) return left + right;
-  return adaptive_length(c, a, m, left, 0.5 * tol, depth + 1) +
-         adaptive_length(c, m, b, right, 0.5 * tol, depth + 1);
+  return adaptive_length(c, a, m, left, 0.5 * tol, depth + 1) + adaptive_length(c, m, b, right, 0.5 * tol, depth + 1);
 }
 
 }  // namespace

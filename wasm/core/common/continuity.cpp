@@ -14,9 +14,8 @@ ContinuityOptions continuity_options_for_size(double size, double relative_toler
   return o;
 }
 
-JunctionInfo classify_junction(const double* in_far, const double* h_in, const double* p,
-                               const double* h_out, const double* out_far,
-                               const ContinuityOptions& options) {
+JunctionInfo classify_junction(const double* in_far, const double* h_in, const double* p, const double* h_out,
+                               const double* out_far, const ContinuityOptions& options) {
   const Vec2 P = vec2_at(p);
   const Vec2 a = P - vec2_at(h_in), b = vec2_at(h_out) - P;  // tangent vectors in and out
   const double eps = options.length_tolerance;
@@ -53,8 +52,8 @@ int spline_junction_count(int point_count, bool closed) {
   return closed ? n : n - 1;
 }
 
-void classify_spline(const double* points, int point_count, bool closed,
-                     const ContinuityOptions& options, JunctionInfo* out) {
+void classify_spline(const double* points, int point_count, bool closed, const ContinuityOptions& options,
+                     JunctionInfo* out) {
   const int count = spline_junction_count(point_count, closed);
   auto pt = [&](int i) {
     i %= point_count;
@@ -63,8 +62,7 @@ void classify_spline(const double* points, int point_count, bool closed,
   };
   for (int j = 0; j < count; ++j) {
     const int anchor = closed ? 3 * j : 3 * (j + 1);
-    out[j] = classify_junction(pt(anchor - 2), pt(anchor - 1), pt(anchor), pt(anchor + 1),
-                               pt(anchor + 2), options);
+    out[j] = classify_junction(pt(anchor - 2), pt(anchor - 1), pt(anchor), pt(anchor + 1), pt(anchor + 2), options);
   }
 }
 

@@ -39,15 +39,14 @@ struct JunctionInfo {
 // (each a pointer to x,y). in_far and out_far are the next control points further away on the
 // incoming and outgoing segments (used for the tangent direction when a handle is degenerate;
 // then the junction is C0: a G1 ratio is undefined).
-JunctionInfo classify_junction(const double* in_far, const double* h_in, const double* p,
-                               const double* h_out, const double* out_far,
-                               const ContinuityOptions& options);
+JunctionInfo classify_junction(const double* in_far, const double* h_in, const double* p, const double* h_out,
+                               const double* out_far, const ContinuityOptions& options);
 
 // Number of junctions of a spline of `point_count` points.
 int spline_junction_count(int point_count, bool closed);
 
 // Classifies every junction of one spline, in junction order, into out[0..count).
-void classify_spline(const double* points, int point_count, bool closed,
-                     const ContinuityOptions& options, JunctionInfo* out);
+void classify_spline(const double* points, int point_count, bool closed, const ContinuityOptions& options,
+                     JunctionInfo* out);
 
 }  // namespace splinekit

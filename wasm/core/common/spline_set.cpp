@@ -7,22 +7,22 @@
 namespace splinekit {
 
 std::string validate(const SplineSet& set) {
-  if (set.points.size() % 2 != 0) return "points must hold x,y pairs (odd length " + std::to_string(set.points.size()) + ")";
+  if (set.points.size() % 2 != 0)
+    return "points must hold x,y pairs (odd length " + std::to_string(set.points.size()) + ")";
   const size_t n = set.start.size();
   if (set.count.size() != n || set.closed.size() != n) return "start, count and closed must have one entry per spline";
   const int total = set.point_count();
   for (size_t s = 0; s < n; ++s) {
     const int b = set.start[s], c = set.count[s];
     if (b < 0 || c < 1 || b + c > total)
-      return "spline " + std::to_string(s) + " indexes points [" + std::to_string(b) + ", " +
-             std::to_string(b + c) + ") outside the " + std::to_string(total) + " points";
+      return "spline " + std::to_string(s) + " indexes points [" + std::to_string(b) + ", " + std::to_string(b + c) +
+             ") outside the " + std::to_string(total) + " points";
     if (set.closed[s] ? (c % 3 != 0) : (c % 3 != 1))
-      return "spline " + std::to_string(s) + " has " + std::to_string(c) + " points: " +
-             (set.closed[s] ? "a closed spline needs 3n" : "an open spline needs 3n+1");
+      return "spline " + std::to_string(s) + " has " + std::to_string(c) +
+             " points: " + (set.closed[s] ? "a closed spline needs 3n" : "an open spline needs 3n+1");
   }
   for (size_t i = 0; i < set.points.size(); ++i)
-    if (!std::isfinite(set.points[i]))
-      return "point " + std::to_string(i / 2) + " has a non-finite coordinate";
+    if (!std::isfinite(set.points[i])) return "point " + std::to_string(i / 2) + " has a non-finite coordinate";
   return {};
 }
 

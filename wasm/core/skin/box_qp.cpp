@@ -38,8 +38,9 @@ constexpr int kInitialSpread = 4;
 //
 // `multiplier_tolerance`: per-variable tolerance on wrong-signed multipliers (BbwOptions in
 // weights.h explains its scale).
-BoxQpReport solve_box_qp(const Eigen::SparseMatrix<double>& Q, const Eigen::VectorXd& c, const Eigen::VectorXd& multiplier_tolerance,
-                         const BoxQpOptions& options, SubsetSolver& solver, Eigen::VectorXd& x) {
+BoxQpReport solve_box_qp(const Eigen::SparseMatrix<double>& Q, const Eigen::VectorXd& c,
+                         const Eigen::VectorXd& multiplier_tolerance, const BoxQpOptions& options, SubsetSolver& solver,
+                         Eigen::VectorXd& x) {
   BoxQpReport report;
   const int n = int(c.size());
   const double tol_x = options.bound_tolerance;
@@ -63,7 +64,8 @@ BoxQpReport solve_box_qp(const Eigen::SparseMatrix<double>& Q, const Eigen::Vect
       Bound b = bound[i];
       if (b == Bound::kFree) {
         b = x[i] < -tol_x ? Bound::kLower : x[i] > 1 + tol_x ? Bound::kUpper : Bound::kFree;
-      } else if ((b == Bound::kLower && g[i] < -multiplier_tolerance[i]) || (b == Bound::kUpper && g[i] > multiplier_tolerance[i])) {
+      } else if ((b == Bound::kLower && g[i] < -multiplier_tolerance[i]) ||
+                 (b == Bound::kUpper && g[i] > multiplier_tolerance[i])) {
         if (!cycling || !released[i])
           b = Bound::kFree;
         else if (!pinned[i])

@@ -40,7 +40,7 @@ struct BoxQpReport {
 //   x                     in: the unconstrained minimizer (Q x = −c); out: the solution, clamped
 //                         to [0,1] exactly (n values)
 BoxQpReport solve_box_qp(const Eigen::SparseMatrix<double>& Q, const Eigen::VectorXd& c,
-                         const Eigen::VectorXd& multiplier_tolerance, const BoxQpOptions& options,
-                         SubsetSolver& solver, Eigen::VectorXd& x);
+                         const Eigen::VectorXd& multiplier_tolerance, const BoxQpOptions& options, SubsetSolver& solver,
+                         Eigen::VectorXd& x);
 
 }  // namespace splinekit::skin

@@ -94,8 +94,10 @@ void build_triangle_grid(const MeshView2& m, TriangleGrid& grid) {
     for (int k = 0; k < 3; ++k)
       for (int a = 0; a < 2; ++a)
         tlo[a] = std::min(tlo[a], m.vertex(f[k])[a]), thi[a] = std::max(thi[a], m.vertex(f[k])[a]);
-    const int i0 = cell_index(tlo[0], grid.x0, grid.cell, grid.nx), i1 = cell_index(thi[0], grid.x0, grid.cell, grid.nx);
-    const int j0 = cell_index(tlo[1], grid.y0, grid.cell, grid.ny), j1 = cell_index(thi[1], grid.y0, grid.cell, grid.ny);
+    const int i0 = cell_index(tlo[0], grid.x0, grid.cell, grid.nx),
+              i1 = cell_index(thi[0], grid.x0, grid.cell, grid.nx);
+    const int j0 = cell_index(tlo[1], grid.y0, grid.cell, grid.ny),
+              j1 = cell_index(thi[1], grid.y0, grid.cell, grid.ny);
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) visit(size_t(j) * grid.nx + i);
   };

@@ -35,7 +35,8 @@ std::string SkinRig::setup(const SplineSet& rest, const std::vector<Continuity>&
   ready_ = false;
   if (std::string e = validate(rest); !e.empty()) return e;
   if (int(kinds.size()) != total_junctions(rest))
-    return "expected " + std::to_string(total_junctions(rest)) + " continuity tags, got " + std::to_string(kinds.size());
+    return "expected " + std::to_string(total_junctions(rest)) + " continuity tags, got " +
+           std::to_string(kinds.size());
   if (handle_count < 1) return "a rig needs at least one handle";
   if (options.samples < 4 || options.samples > 10000) return "samples per curve must be in [4, 10000]";
   options_ = options;
@@ -79,7 +80,8 @@ std::string SkinRig::setup(const SplineSet& rest, const std::vector<Continuity>&
       Junction c{base + (anchor + count - 1) % count, base + anchor, base + (anchor + 1) % count, kind, 1.0, 0.0};
       const Vec2 a = vec2_at(rest_.points.data(), c.anchor) - vec2_at(rest_.points.data(), c.in);
       const Vec2 b = vec2_at(rest_.points.data(), c.out) - vec2_at(rest_.points.data(), c.anchor);
-      if (a.norm() <= 1e-12 * (1 + total_length_) || b.norm() <= 1e-12 * (1 + total_length_)) continue;  // no tangent to keep
+      if (a.norm() <= 1e-12 * (1 + total_length_) || b.norm() <= 1e-12 * (1 + total_length_))
+        continue;  // no tangent to keep
       c.ratio = b.norm() / a.norm();
       c.angle = std::atan2(cross(a, b), a.dot(b));
       junctions_.push_back(c);
@@ -310,7 +312,8 @@ double SkinRig::error(const double* X, const double* T, double* per_curve) const
     for (int s = 0; s < S; ++s) {
       const size_t sample = c * S + s;
       double bx = 0, by = 0;
-      for (int a = 0; a < 4; ++a) bx += bernstein_(a, s) * X[2 * curves_[c][a]], by += bernstein_(a, s) * X[2 * curves_[c][a] + 1];
+      for (int a = 0; a < 4; ++a)
+        bx += bernstein_(a, s) * X[2 * curves_[c][a]], by += bernstein_(a, s) * X[2 * curves_[c][a] + 1];
       const double px = sample_points_[2 * sample], py = sample_points_[2 * sample + 1];
       double tx = 0, ty = 0;
       for (int i = 0; i < H; ++i) {
@@ -367,9 +370,10 @@ RelaxReport SkinRig::relax(const double* T) {
     const Eigen::SparseMatrix<double> sub = substitution(form, points_.data());
     Eigen::SparseMatrix<double> A = sub.transpose() * hessian_ * sub;
     A.makeCompressed();
-    const bool same = patterns[f].rows() == A.rows() && patterns[f].nonZeros() == A.nonZeros() &&
-                      std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1, patterns[f].outerIndexPtr()) &&
-                      std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), patterns[f].innerIndexPtr());
+    const bool same =
+        patterns[f].rows() == A.rows() && patterns[f].nonZeros() == A.nonZeros() &&
+        std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1, patterns[f].outerIndexPtr()) &&
+        std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), patterns[f].innerIndexPtr());
     if (!same) {
       solvers[f].analyzePattern(A);
       patterns[f] = A;

@@ -39,16 +39,16 @@
 namespace splinekit::skin {
 
 struct SkinOptions {
-  int samples = 100;             // S, quadrature samples per curve (paper: 100)
-  int relax_max_iterations = 20; // flexible G1/angle: cap on alternating iterations
-  double relax_tolerance = 1e-3; // stop when an iteration lowers the energy by less than this fraction
+  int samples = 100;              // S, quadrature samples per curve (paper: 100)
+  int relax_max_iterations = 20;  // flexible G1/angle: cap on alternating iterations
+  double relax_tolerance = 1e-3;  // stop when an iteration lowers the energy by less than this fraction
 };
 
 // What relax() did, for tests and the UI.
 struct RelaxReport {
   int iterations = 0;
-  int rejected = 0;                 // steps undone because clamping would have raised the energy
-  std::vector<double> energies;     // energy before the first and after every accepted iteration
+  int rejected = 0;              // steps undone because clamping would have raised the energy
+  std::vector<double> energies;  // energy before the first and after every accepted iteration
 };
 
 // The deformation methods compared in the paper (§5). The numbers cross to TS (src/skin/rig.ts).
@@ -131,14 +131,14 @@ class SkinRig {
   std::vector<std::array<int, 4>> curves_;  // point indices of each cubic
   std::vector<double> lengths_;             // ℓ_j
   double total_length_ = 0;
-  std::vector<Junction> junctions_;         // constrained junctions (C1, G1, angle)
-  std::vector<int> lone_points_;            // splines with no segment: moved by s itself
+  std::vector<Junction> junctions_;  // constrained junctions (C1, G1, angle)
+  std::vector<int> lone_points_;     // splines with no segment: moved by s itself
 
   std::vector<double> sample_points_, sample_weights_, point_weights_, point_gradients_;
-  Eigen::MatrixXd bernstein_;               // 4 by S, b(t_s)
-  Eigen::SparseMatrix<double> hessian_;     // 2N by 2N: Σ ℓ_j Â ⊗ I2 (+ lone points)
-  Eigen::MatrixXd wide_;                    // 2N by 6H: rhs = wide_ · vec(T) (Ŵ assembled per point)
-  Eigen::MatrixXd O_;                       // 2N by 6H
+  Eigen::MatrixXd bernstein_;            // 4 by S, b(t_s)
+  Eigen::SparseMatrix<double> hessian_;  // 2N by 2N: Σ ℓ_j Â ⊗ I2 (+ lone points)
+  Eigen::MatrixXd wide_;                 // 2N by 6H: rhs = wide_ · vec(T) (Ŵ assembled per point)
+  Eigen::MatrixXd O_;                    // 2N by 6H
   std::vector<double> points_, baseline_;
   bool ready_ = false;
 };

@@ -11,7 +11,8 @@ namespace {
 double spread2(const double* handles, int h) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (int i = 0; i < h; ++i)
-    for (int a = 0; a < 2; ++a) lo[a] = std::fmin(lo[a], handles[2 * i + a]), hi[a] = std::fmax(hi[a], handles[2 * i + a]);
+    for (int a = 0; a < 2; ++a)
+      lo[a] = std::fmin(lo[a], handles[2 * i + a]), hi[a] = std::fmax(hi[a], handles[2 * i + a]);
   const double s2 = (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]);
   return s2 > 0 ? s2 : 1.0;
 }

@@ -9,12 +9,12 @@ namespace splinekit::skin {
 
 // Weights of `handle_count` handles (handles: #H by 2, flat x,y) at `point_count` points
 // (points: #P by 2) into out (#P by #H, row-major). power > 0.
-void shepard_weights(const double* handles, int handle_count, const double* points, int point_count,
-                     double power, double* out);
+void shepard_weights(const double* handles, int handle_count, const double* points, int point_count, double power,
+                     double* out);
 
 // Gradients ∇w_i at the points into out (#P by #H by 2, row-major: out[(p*H + i)*2 + axis]).
 // At a handle the gradient is taken as its limit for power > 1, which is zero.
-void shepard_gradients(const double* handles, int handle_count, const double* points, int point_count,
-                       double power, double* out);
+void shepard_gradients(const double* handles, int handle_count, const double* points, int point_count, double power,
+                       double* out);
 
 }  // namespace splinekit::skin

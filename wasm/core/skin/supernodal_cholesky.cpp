@@ -197,7 +197,7 @@ bool SupernodalCholesky::factorize_numeric(const SpMat& A) {
   // update matrices not yet consumed by their parents.
   if (front_.size() < size_t(largest) * largest) front_.resize(size_t(largest) * largest);
   size_t top = 0;
-  std::vector<std::pair<size_t, int>> pending;  // (offset in stack_, supernode) of each pending update
+  std::vector<std::pair<size_t, int>> pending;       // (offset in stack_, supernode) of each pending update
   std::vector<int> position(size_t(n_), -1), local;  // front position of each row; of a child's rows
   for (int s = 0; s < S; ++s) {
     const int f = first_[s], ns = first_[s + 1] - f, r = row_ptr_[s + 1] - row_ptr_[s], m = ns + r;

@@ -41,7 +41,7 @@ class SupernodalCholesky {
   const std::vector<int>& postorder() const { return post_; }
 
   // ---- Counters ---------------------------------------------------------------------------------
-  int size() const { return n_; }                                // n
+  int size() const { return n_; }                                 // n
   int supernode_count() const { return int(first_.size()) - 1; }  // supernodes after amalgamation
   // Columns of supernode s (0 ≤ s < supernode_count()).
   int supernode_columns(int s) const { return first_[s + 1] - first_[s]; }
@@ -60,7 +60,7 @@ class SupernodalCholesky {
   std::vector<int> row_ptr_, rows_;       // rows below each supernode (sorted)
   std::vector<size_t> value_ptr_;         // dense (columns + rows) by columns block per supernode
   std::vector<double> values_;
-  std::vector<double> front_, stack_;     // numeric workspace, kept across factorizations
+  std::vector<double> front_, stack_;  // numeric workspace, kept across factorizations
 };
 
 }  // namespace splinekit::skin

@@ -115,8 +115,8 @@ std::string validate_weights_input(const MeshView2& m, const int32_t* handles, i
   for (int j = 0; j < handle_count; ++j) {
     const int v = handles[j];
     if (v < 0 || v >= nv)
-      return "handle " + std::to_string(j) + " is vertex " + std::to_string(v) + ", outside [0, " +
-             std::to_string(nv) + ")";
+      return "handle " + std::to_string(j) + " is vertex " + std::to_string(v) + ", outside [0, " + std::to_string(nv) +
+             ")";
     if (owner[v] >= 0)
       return "handles " + std::to_string(owner[v]) + " and " + std::to_string(j) + " are the same vertex " +
              std::to_string(v);

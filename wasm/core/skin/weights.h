@@ -68,18 +68,18 @@ struct WeightsReport {
 WeightsReport harmonic_weights(const MeshView2& mesh, const int32_t* handles, int handle_count, double* W);
 
 struct BbwOptions {
-  int max_iterations = 100;           // cap on active-set iterations (linear solves) per handle
-  double bound_tolerance = 1e-9;      // how far a weight may leave [0,1] and still count as feasible
-                                      // (the result is clamped to [0,1] exactly)
-  double multiplier_tolerance = 3;    // how negative a bound's multiplier λ_i may be and still keep the
-                                      // bound active: |λ_i| ≤ tolerance · √M_ii / area^{3/2}. The scale
-                                      // is the weight change such a multiplier error causes along the
-                                      // active set's rim (via the bilaplacian's Green's function), so
-                                      // the value is unit- and resolution-independent. Smaller is closer
-                                      // to the exact optimum and costs more iterations; the default keeps
-                                      // weights within ~1e-4 of it on the test and benchmark meshes
-                                      // (500 to 20k triangles)
-  bool partition_of_unity = true;     // normalize so Σ_i w_i = 1 at every vertex (off: the raw QP optimum)
+  int max_iterations = 100;            // cap on active-set iterations (linear solves) per handle
+  double bound_tolerance = 1e-9;       // how far a weight may leave [0,1] and still count as feasible
+                                       // (the result is clamped to [0,1] exactly)
+  double multiplier_tolerance = 3;     // how negative a bound's multiplier λ_i may be and still keep the
+                                       // bound active: |λ_i| ≤ tolerance · √M_ii / area^{3/2}. The scale
+                                       // is the weight change such a multiplier error causes along the
+                                       // active set's rim (via the bilaplacian's Green's function), so
+                                       // the value is unit- and resolution-independent. Smaller is closer
+                                       // to the exact optimum and costs more iterations; the default keeps
+                                       // weights within ~1e-4 of it on the test and benchmark meshes
+                                       // (500 to 20k triangles)
+  bool partition_of_unity = true;      // normalize so Σ_i w_i = 1 at every vertex (off: the raw QP optimum)
   MassType mass = MassType::kVoronoi;  // see operators.h
 };
 
@@ -95,7 +95,7 @@ struct BbwOptions {
 //   handles  #H vertex indices
 //   options  see BbwOptions
 //   W        output, #V by #H row-major
-WeightsReport bbw_weights(const MeshView2& mesh, const int32_t* handles, int handle_count,
-                          const BbwOptions& options, double* W);
+WeightsReport bbw_weights(const MeshView2& mesh, const int32_t* handles, int handle_count, const BbwOptions& options,
+                          double* W);
 
 }  // namespace splinekit::skin

@@ -25,13 +25,20 @@ auto olr_point(int level, int N, int i, Pt pt, Avg avg, Mix mix) -> decltype(pt(
   }
   if (level == 1) {  // knots 0000 ½ 1111 -> 0000 ¼ ½ ¾ 1111 (Boehm): 3/16 10/16 3/16 in the middle
     switch (i) {
-      case 0: return pt(0);
-      case 1: return avg(0, 0.5);
-      case 2: return avg(1, 0.25);
-      case 3: return mix(avg(1, 0.625), avg(2, 0.375));
-      case 4: return avg(2, 0.75);
-      case 5: return avg(3, 0.5);
-      default: return pt(4);
+      case 0:
+        return pt(0);
+      case 1:
+        return avg(0, 0.5);
+      case 2:
+        return avg(1, 0.25);
+      case 3:
+        return mix(avg(1, 0.625), avg(2, 0.375));
+      case 4:
+        return avg(2, 0.75);
+      case 5:
+        return avg(3, 0.5);
+      default:
+        return pt(4);
     }
   }
   // Eq. 10 at the ends (and its mirror image), eq. 9 in the middle.
@@ -73,7 +80,8 @@ double CurveTracer::mean_face_area() {
     const TriMesh& mesh = solver_.mesh();
     double total = 0;
     for (const auto& t : mesh.triangles)
-      total += (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm() / 2;
+      total +=
+          (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm() / 2;
     mean_face_area_ = mesh.triangles.empty() ? 0 : total / static_cast<double>(mesh.triangles.size());
   }
   return mean_face_area_;
@@ -158,8 +166,10 @@ void CurveTracer::rdc_split(const RdcNode& node, RdcNode& left, RdcNode& right) 
   const TriMesh& mesh = solver_.mesh();
   // The midpoints q0, q1, q2 of the sides, then r0, r1 of the paths q0q1 and q1q2, then r0r1: each
   // new path is seeded through the halves of the two it joins (they meet at a control point).
-  const GeodesicPath q01 = seed_or_search({sub_path(mesh, node.sides[0], 0.5, 1), sub_path(mesh, node.sides[1], 0, 0.5)});
-  const GeodesicPath q12 = seed_or_search({sub_path(mesh, node.sides[1], 0.5, 1), sub_path(mesh, node.sides[2], 0, 0.5)});
+  const GeodesicPath q01 =
+      seed_or_search({sub_path(mesh, node.sides[0], 0.5, 1), sub_path(mesh, node.sides[1], 0, 0.5)});
+  const GeodesicPath q12 =
+      seed_or_search({sub_path(mesh, node.sides[1], 0.5, 1), sub_path(mesh, node.sides[2], 0, 0.5)});
   const GeodesicPath r01 = seed_or_search({sub_path(mesh, q01, 0.5, 1), sub_path(mesh, q12, 0, 0.5)});
   const double tm = 0.5 * (node.t0 + node.t1);
   left.sides = {sub_path(mesh, node.sides[0], 0, 0.5), sub_path(mesh, q01, 0, 0.5), sub_path(mesh, r01, 0, 0.5)};
@@ -269,8 +279,8 @@ bool CurveTracer::olr_stop(const Sides& sides, int level, const TraceOptions& op
 // is estimated by the path to f(b,b,u_{m+5}) on side P_{m+2} -> P_{m+3} (the next leaf's f(b,b,c) when
 // it has this level; side P2 -> P3 itself at the curve's end). The previous leaf's f(a',a,a) must also
 // turn less into the joint. Below max_levels a node failing these is expanded instead.
-bool CurveTracer::olr_make_leaf(Sides& sides, int level, int m, const TraceOptions& options, const std::vector<OlrLeaf>& leaves,
-                                OlrLeaf& leaf) {
+bool CurveTracer::olr_make_leaf(Sides& sides, int level, int m, const TraceOptions& options,
+                                const std::vector<OlrLeaf>& leaves, OlrLeaf& leaf) {
   const TriMesh& mesh = solver_.mesh();
   const double u2 = olr_knot(level, m + 2), u5 = olr_knot(level, m + 5), u6 = olr_knot(level, m + 6);
   leaf.a = olr_knot(level, m + 3), leaf.b = olr_knot(level, m + 4);
@@ -318,8 +328,8 @@ void CurveTracer::olr_adaptive_polygon(const ControlPolygon& polygon, const Trac
   const TriMesh& mesh = solver_.mesh();
   std::vector<OlrLeaf>& leaves = scratch_leaves_;
   leaves.clear();
-  olr_adaptive({unseeded(polygon[0]), unseeded(polygon[1]), unseeded(polygon[2]), unseeded(polygon[3])}, nullptr, 0, 0, 0,
-               options, leaves);
+  olr_adaptive({unseeded(polygon[0]), unseeded(polygon[1]), unseeded(polygon[2]), unseeded(polygon[3])}, nullptr, 0, 0,
+               0, options, leaves);
   segments.clear();
   segments.push_back(std::move(leaves.front().first));
   for (size_t k = 0; k < leaves.size(); ++k) {
@@ -365,7 +375,9 @@ ControlPolygon CurveTracer::olr_bezier(const std::array<MeshPoint, 4>& points, c
         const double lo = olr_knot(level, I), hi = olr_knot(level, I + 4 - r);
         const double alpha = hi > lo ? (xs[r - 1] - lo) / (hi - lo) : 0;
         // The first step averages consecutive control points: along the sides already known.
-        d[i] = r == 1 ? (alpha <= 0 ? d[i - 1] : alpha >= 1 ? d[i] : eval_path(mesh, sides[i - 1], alpha))
+        d[i] = r == 1 ? (alpha <= 0   ? d[i - 1]
+                         : alpha >= 1 ? d[i]
+                                      : eval_path(mesh, sides[i - 1], alpha))
                       : average(d[i - 1], d[i], alpha);
       }
     }
@@ -376,7 +388,8 @@ ControlPolygon CurveTracer::olr_bezier(const std::array<MeshPoint, 4>& points, c
 
 // ---- Public -------------------------------------------------------------------------------------
 
-void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& options, std::vector<MeshPoint>& points) {
+void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& options,
+                            std::vector<MeshPoint>& points) {
   search_ = options.search;
   points.clear();
   if (options.scheme == Scheme::kOLR) {
@@ -443,7 +456,8 @@ MeshPoint CurveTracer::eval(const ControlPolygon& polygon, double t, const Trace
   }
   // Direct de Casteljau on the (short) leaf polygon.
   const double s = (t - t0) / (t1 - t0);
-  const MeshPoint q0 = average(leaf[0], leaf[1], s), q1 = average(leaf[1], leaf[2], s), q2 = average(leaf[2], leaf[3], s);
+  const MeshPoint q0 = average(leaf[0], leaf[1], s), q1 = average(leaf[1], leaf[2], s),
+                  q2 = average(leaf[2], leaf[3], s);
   return average(average(q0, q1, s), average(q1, q2, s), s);
 }
 
@@ -451,7 +465,8 @@ void CurveTracer::split_leaf(const ControlPolygon& polygon, const ControlPolygon
                              ControlPolygon& left, ControlPolygon& right) {
   const TriMesh& mesh = solver_.mesh();
   const double s = std::clamp((t - t0) / (t1 - t0), 0.0, 1.0);
-  const MeshPoint q0 = average(leaf[0], leaf[1], s), q1 = average(leaf[1], leaf[2], s), q2 = average(leaf[2], leaf[3], s);
+  const MeshPoint q0 = average(leaf[0], leaf[1], s), q1 = average(leaf[1], leaf[2], s),
+                  q2 = average(leaf[2], leaf[3], s);
   const MeshPoint r0 = average(q0, q1, s), r1 = average(q1, q2, s);
   const MeshPoint pt = average(r0, r1, s);
   // Shoots from pt along the geodesic towards x (or away from it: sign -1) for `scale` times its length.
@@ -492,8 +507,8 @@ void CurveTracer::split(const ControlPolygon& polygon, double t, const TraceOpti
   Sides sides;
   int level, interval;
   olr_leaf(polygon, t, options, points, sides, level, interval);
-  split_leaf(polygon, olr_bezier(points, sides, level, interval), olr_knot(level, interval + 3), olr_knot(level, interval + 4), t,
-             left, right);
+  split_leaf(polygon, olr_bezier(points, sides, level, interval), olr_knot(level, interval + 3),
+             olr_knot(level, interval + 4), t, left, right);
 }
 
 }  // namespace splinekit::surface

@@ -24,9 +24,9 @@ enum class Scheme { kRDC, kOLR };
 struct TraceOptions {
   Scheme scheme = Scheme::kOLR;
   bool adaptive = false;
-  int levels = 5;                 // uniform subdivision levels
-  double angle = 0.0872664626;    // adaptive threshold (radians; 5°)
-  int max_levels = 10;            // adaptive recursion bound (resolves cusps)
+  int levels = 5;                           // uniform subdivision levels
+  double angle = 0.0872664626;              // adaptive threshold (radians; 5°)
+  int max_levels = 10;                      // adaptive recursion bound (resolves cusps)
   SearchGraph search = SearchGraph::kDual;  // phase (i) graph of every shortest path (geodesic.h)
 };
 
@@ -89,7 +89,9 @@ class CurveTracer {
   };
   static Located unseeded(const MeshPoint& p) { return {p, -1, 0, {}}; }
   // Whether x's place on the polygon comes strictly before y's.
-  static bool comes_before(const Located& x, const Located& y) { return x.side < y.side || (x.side == y.side && x.w < y.w); }
+  static bool comes_before(const Located& x, const Located& y) {
+    return x.side < y.side || (x.side == y.side && x.w < y.w);
+  }
   // The path from x to y; `sides` are the polygon's sides that x.side and y.side index (from `offset`).
   GeodesicPath path_between(const Located& x, const Located& y, const GeodesicPath* sides, int offset);
   GeodesicPath seed_or_search(const std::vector<GeodesicPath>& pieces);
@@ -100,7 +102,8 @@ class CurveTracer {
   void olr_points(int level, int N, const Located* points, const GeodesicPath* sides, int offset, int first, int count,
                   Located* out);
   // The polygon after `levels` uniform steps and the shortest paths between its points.
-  void olr_uniform(const ControlPolygon& polygon, int levels, std::vector<Located>& points, std::vector<GeodesicPath>& sides);
+  void olr_uniform(const ControlPolygon& polygon, int levels, std::vector<Located>& points,
+                   std::vector<GeodesicPath>& sides);
   bool olr_stop(const Sides& sides, int level, const TraceOptions& options);
   void olr_leaf(const ControlPolygon& polygon, double t, const TraceOptions& options, std::array<MeshPoint, 4>& points,
                 Sides& sides, int& level, int& interval);
@@ -122,7 +125,8 @@ class CurveTracer {
   bool olr_make_leaf(Sides& sides, int level, int m, const TraceOptions& options, const std::vector<OlrLeaf>& leaves,
                      OlrLeaf& leaf);
   // The adaptive output: the leaves' Bézier polygons joined into one, as its 3·#leaves geodesic segments.
-  void olr_adaptive_polygon(const ControlPolygon& polygon, const TraceOptions& options, std::vector<GeodesicPath>& segments);
+  void olr_adaptive_polygon(const ControlPolygon& polygon, const TraceOptions& options,
+                            std::vector<GeodesicPath>& segments);
   ControlPolygon olr_bezier(const std::array<MeshPoint, 4>& points, const Sides& sides, int level, int interval);
 
   void append_path(const GeodesicPath& p, std::vector<MeshPoint>& polyline);

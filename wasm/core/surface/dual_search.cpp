@@ -72,8 +72,10 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
 }
 
 size_t DualSearch::bytes() const {
-  return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.edge_offsets.capacity()) * sizeof(int) +
-         slot_.capacity() * sizeof(int) + visits_.capacity() * sizeof(Visit) + centroids_.capacity() * sizeof(centroids_[0]);
+  return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.edge_offsets.capacity()) *
+             sizeof(int) +
+         slot_.capacity() * sizeof(int) + visits_.capacity() * sizeof(Visit) +
+         centroids_.capacity() * sizeof(centroids_[0]);
 }
 
 // Position of graph node `node`: a face centroid, or a point along an edge.
@@ -109,7 +111,7 @@ int DualSearch::link_face(int a, int b) const {
 }
 
 bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats,
-                                   SearchGraph graph) {
+                               SearchGraph graph) {
   const bool dual = graph == SearchGraph::kDual;
   strip.clear();
   const int nf = graph_.faces;
@@ -175,7 +177,9 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   float best = std::numeric_limits<float>::infinity();
 
   for (int s : sources)
-    for_face_nodes(s, -1, [&](int node) { relax(node, -1, static_cast<float>((visit(node).position.cast<double>() - pa).norm())); });
+    for_face_nodes(s, -1, [&](int node) {
+      relax(node, -1, static_cast<float>((visit(node).position.cast<double>() - pa).norm()));
+    });
 
   int visited = 0;
   while (!queue.empty()) {

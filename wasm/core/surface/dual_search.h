@@ -23,12 +23,12 @@ namespace splinekit::surface {
 struct DualGraph {
   int faces = 0;
   int edges = 0;
-  int steiner = 4;                      // nodes per ordinary edge
-  double long_edge = 0;                 // edges longer than this get one node per such length
-  std::vector<int> halfedge_edge;       // #3F: undirected edge of half-edge (f, k)
-  std::vector<int> edge_halfedge;       // #E: one half-edge (3f + k) of each edge
-  std::vector<int> edge_offsets;        // #E+1: first node of each edge after the F face nodes
-                                        // (empty when every edge has `steiner` nodes)
+  int steiner = 4;                 // nodes per ordinary edge
+  double long_edge = 0;            // edges longer than this get one node per such length
+  std::vector<int> halfedge_edge;  // #3F: undirected edge of half-edge (f, k)
+  std::vector<int> edge_halfedge;  // #E: one half-edge (3f + k) of each edge
+  std::vector<int> edge_offsets;   // #E+1: first node of each edge after the F face nodes
+                                   // (empty when every edge has `steiner` nodes)
   // Number of nodes: F face nodes, then the edge nodes edge by edge.
   int nodes() const { return faces + (edge_offsets.empty() ? edges * steiner : edge_offsets.back()); }
   // The nodes of edge e are [first_node(e), end_node(e)).
@@ -110,8 +110,8 @@ class DualSearch {
   // per-node cost is one int (slot_: the node's record, -1 when untouched; also the loop-removal
   // table of strips, -1 everywhere between uses).
   struct Visit {
-    float dist, heuristic;        // from the source; A* term to the target
-    int node, parent;             // parent: a node, -1 at the source
+    float dist, heuristic;  // from the source; A* term to the target
+    int node, parent;       // parent: a node, -1 at the source
     Eigen::Vector3f position;
     bool queued;
   };

@@ -85,7 +85,8 @@ void make_smooth(GeodesicSolver& solver, std::vector<MeshPoint>& points, int anc
   points[after] = exp_map(mesh, points[anchor], {out.length, aout});
 }
 
-void rotate_scale(GeodesicSolver& solver, std::vector<MeshPoint>& points, const MeshPoint& c, double angle, double scale) {
+void rotate_scale(GeodesicSolver& solver, std::vector<MeshPoint>& points, const MeshPoint& c, double angle,
+                  double scale) {
   std::vector<Polar> polar(points.size());
   for (size_t i = 0; i < points.size(); ++i) polar[i] = log_map(solver, c, points[i]);
   for (size_t i = 0; i < points.size(); ++i)

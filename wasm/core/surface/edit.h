@@ -31,7 +31,8 @@ void move_handle(GeodesicSolver& solver, std::vector<MeshPoint>& points, int han
 void make_smooth(GeodesicSolver& solver, std::vector<MeshPoint>& points, int anchor);
 
 // Rotation by `angle` and scaling by `scale` about c.
-void rotate_scale(GeodesicSolver& solver, std::vector<MeshPoint>& points, const MeshPoint& c, double angle, double scale);
+void rotate_scale(GeodesicSolver& solver, std::vector<MeshPoint>& points, const MeshPoint& c, double angle,
+                  double scale);
 // Translation that takes `from` to `to`.
 void translate(GeodesicSolver& solver, std::vector<MeshPoint>& points, const MeshPoint& from, const MeshPoint& to);
 

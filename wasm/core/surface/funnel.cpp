@@ -30,7 +30,8 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
   auto finish_known = [&](size_t y) {
     const std::vector<Apex>& known = *splice->path;
     for (size_t k = y + 1; k < known.size(); ++k)
-      apices.push_back({splice->motion(known[k].pos), known[k].vertex, known[k].portal - splice->shift, known[k].emitted - splice->shift});
+      apices.push_back({splice->motion(known[k].pos), known[k].vertex, known[k].portal - splice->shift,
+                        known[k].emitted - splice->shift});
     apices.back().pos = target;
   };
   for (int i = apex_index + 1; i <= n; ++i) {
@@ -94,7 +95,8 @@ void drop_straight(std::vector<Apex>& apices) {
 
 // Lerps on every portal from the funnel's polyline, and the arc length at each point of the path
 // (start, crossings, end).
-void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vector<double>& lerps, std::vector<double>& arc) {
+void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vector<double>& lerps,
+               std::vector<double>& arc) {
   const int n = static_cast<int>(u.portals.size());
   lerps.resize(n);
   arc.resize(n + 2);

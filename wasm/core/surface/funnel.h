@@ -50,7 +50,8 @@ void drop_straight(std::vector<Apex>& apices);
 
 // Lerps on every portal (#portals) from the funnel's polyline, and the arc length at each point of
 // the path (#portals+2: start, crossings, end).
-void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vector<double>& lerps, std::vector<double>& arc);
+void crossings(const UnfoldedStrip& u, const std::vector<Apex>& apices, std::vector<double>& lerps,
+               std::vector<double>& arc);
 
 // Length of the polyline through the apices.
 inline double polyline_length(const std::vector<Apex>& apices) {

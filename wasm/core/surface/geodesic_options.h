@@ -12,10 +12,10 @@ enum class SearchGraph { kRefined, kDual };
 
 struct ShortestPathOptions {
   // ---- Phase (iii), the straightening (straighten.h) ----
-  bool straighten = true;          // run phase (iii) at all (else the funnel path of the initial strip)
-  bool chords = true;              // flips along the line between apices (else semi-stars and zippers only)
-  double chord_min_turn = 0.01;    // radians: a chord only where the path turns by more (else a semi-star)
-  int max_passes = 100000;         // safety bound on phase (iii)'s passes (each flips several vertices)
+  bool straighten = true;        // run phase (iii) at all (else the funnel path of the initial strip)
+  bool chords = true;            // flips along the line between apices (else semi-stars and zippers only)
+  double chord_min_turn = 0.01;  // radians: a chord only where the path turns by more (else a semi-star)
+  int max_passes = 100000;       // safety bound on phase (iii)'s passes (each flips several vertices)
   // ---- Phase (i), the search (dual_search.h) ----
   double long_edge_fraction = 0.01;  // edges longer than this fraction of the bounding-box diagonal
                                      // get one graph node per such length

@@ -114,8 +114,8 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
   }
   for (int i = 0; i < 3 * num_faces; ++i) {
     if (triangles[i] < 0 || triangles[i] >= num_vertices) {
-      error = "face " + std::to_string(i / 3) + " refers to vertex " + std::to_string(triangles[i]) + ", but the mesh has " +
-              std::to_string(num_vertices) + " vertices";
+      error = "face " + std::to_string(i / 3) + " refers to vertex " + std::to_string(triangles[i]) +
+              ", but the mesh has " + std::to_string(num_vertices) + " vertices";
       return MeshStatus::kInvalidInput;
     }
   }
@@ -192,9 +192,8 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
       }
       for (int k = 0; k < 3; ++k) half_edges.push_back({edge_key(t[k], t[(k + 1) % 3]), f, static_cast<int8_t>(k)});
     }
-    std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& a, const HalfEdge& b) {
-      return a.key != b.key ? a.key < b.key : a.face < b.face;
-    });
+    std::sort(half_edges.begin(), half_edges.end(),
+              [](const HalfEdge& a, const HalfEdge& b) { return a.key != b.key ? a.key < b.key : a.face < b.face; });
     for (size_t i = 0; i < half_edges.size();) {
       size_t j = i;
       while (j < half_edges.size() && half_edges[j].key == half_edges[i].key) ++j;
@@ -331,7 +330,8 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
       on_boundary[a] = on_boundary[b] = 1;
       parent[find(a)] = find(b);
     }
-    for (size_t v = 0; v < parent.size(); ++v) report.boundary_loops += on_boundary[v] && find(static_cast<int>(v)) == static_cast<int>(v);
+    for (size_t v = 0; v < parent.size(); ++v)
+      report.boundary_loops += on_boundary[v] && find(static_cast<int>(v)) == static_cast<int>(v);
   }
   Vec3 lo = mesh.positions[0], hi = mesh.positions[0];
   for (const Vec3& p : mesh.positions) {
@@ -347,14 +347,15 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
 
 size_t mesh_bytes(const TriMesh& m) {
   return m.positions.capacity() * sizeof(Vec3) + m.triangles.capacity() * sizeof(m.triangles[0]) +
-         m.adjacency.capacity() * sizeof(m.adjacency[0]) + (m.vertex_face.capacity() + m.file_vertex.capacity() +
-                                                            m.mesh_vertex.capacity()) * sizeof(int) +
+         m.adjacency.capacity() * sizeof(m.adjacency[0]) +
+         (m.vertex_face.capacity() + m.file_vertex.capacity() + m.mesh_vertex.capacity()) * sizeof(int) +
          m.flipped.capacity() + (m.file_face.capacity() + m.mesh_face.capacity()) * sizeof(int);
 }
 
 Vec3 eval_position(const TriMesh& mesh, const MeshPoint& p) {
   const auto& t = mesh.triangles[p.face];
-  return (1 - p.uv.x() - p.uv.y()) * mesh.positions[t[0]] + p.uv.x() * mesh.positions[t[1]] + p.uv.y() * mesh.positions[t[2]];
+  return (1 - p.uv.x() - p.uv.y()) * mesh.positions[t[0]] + p.uv.x() * mesh.positions[t[1]] +
+         p.uv.y() * mesh.positions[t[2]];
 }
 
 Vec3 face_normal(const TriMesh& mesh, int face) {

@@ -69,16 +69,16 @@ inline std::array<std::pair<const char*, int>, 13> report_fields(const MeshRepor
 }
 
 struct TriMesh {
-  std::vector<Vec3> positions;                 // #V mesh-space vertices
-  std::vector<std::array<int, 3>> triangles;   // #F faces (mesh order), consistently wound
-  std::vector<std::array<int, 3>> adjacency;   // face across edge (t[k], t[k+1]); -1 on a boundary
-  std::vector<int> vertex_face;                // #V one face of each vertex; a fan's first face on a boundary
-  std::vector<int> file_vertex;                // #V mesh vertex -> file vertex
-  std::vector<int> mesh_vertex;                // #file vertices: file vertex -> mesh vertex (-1 unused)
-  std::vector<int> file_face;                  // #F mesh face -> file face
-  std::vector<int> mesh_face;                  // #F file face -> mesh face
-  std::vector<uint8_t> flipped;                // #F 1 when the (mesh) face's winding was reversed
-  double scale = 1;                            // bounding-box diagonal
+  std::vector<Vec3> positions;                // #V mesh-space vertices
+  std::vector<std::array<int, 3>> triangles;  // #F faces (mesh order), consistently wound
+  std::vector<std::array<int, 3>> adjacency;  // face across edge (t[k], t[k+1]); -1 on a boundary
+  std::vector<int> vertex_face;               // #V one face of each vertex; a fan's first face on a boundary
+  std::vector<int> file_vertex;               // #V mesh vertex -> file vertex
+  std::vector<int> mesh_vertex;               // #file vertices: file vertex -> mesh vertex (-1 unused)
+  std::vector<int> file_face;                 // #F mesh face -> file face
+  std::vector<int> mesh_face;                 // #F file face -> mesh face
+  std::vector<uint8_t> flipped;               // #F 1 when the (mesh) face's winding was reversed
+  double scale = 1;                           // bounding-box diagonal
   MeshReport report;
 };
 
@@ -86,8 +86,8 @@ enum class MeshStatus { kOk, kInvalidInput };
 
 // Builds a mesh from file arrays. positions: #file_vertices x 3; triangles: #faces x 3 file indices.
 // On kInvalidInput, `error` names the problem and `mesh` is left untouched.
-MeshStatus build_mesh(const double* positions, int num_vertices, const int* triangles, int num_faces,
-                      TriMesh& mesh, std::string& error);
+MeshStatus build_mesh(const double* positions, int num_vertices, const int* triangles, int num_faces, TriMesh& mesh,
+                      std::string& error);
 
 // Bytes held by the mesh's arrays.
 size_t mesh_bytes(const TriMesh& mesh);

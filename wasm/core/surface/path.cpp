@@ -64,7 +64,8 @@ void path_points(const TriMesh& mesh, const GeodesicPath& path, std::vector<Mesh
 void path_positions(const TriMesh& mesh, const GeodesicPath& path, std::vector<Vec3>& positions) {
   positions.clear();
   positions.push_back(eval_position(mesh, path.start));
-  for (size_t i = 0; i < path.lerps.size(); ++i) positions.push_back(eval_position(mesh, crossing_point(mesh, path, i, 0)));
+  for (size_t i = 0; i < path.lerps.size(); ++i)
+    positions.push_back(eval_position(mesh, crossing_point(mesh, path, i, 0)));
   positions.push_back(eval_position(mesh, path.end));
 }
 

@@ -11,9 +11,9 @@ namespace splinekit::surface {
 
 // A path is its strip of faces and the intercepts (lerps) on the edges between consecutive faces.
 struct GeodesicPath {
-  MeshPoint start, end;        // start on strip.front(), end on strip.back()
-  std::vector<int> strip;      // faces crossed, consecutive ones adjacent
-  std::vector<double> lerps;   // #strip-1: crossing of edge (t[k], t[k+1]) of strip[i] toward strip[i+1]
+  MeshPoint start, end;       // start on strip.front(), end on strip.back()
+  std::vector<int> strip;     // faces crossed, consecutive ones adjacent
+  std::vector<double> lerps;  // #strip-1: crossing of edge (t[k], t[k+1]) of strip[i] toward strip[i+1]
   // Arc length at the start, each crossing and the end (#strip+1), as the straightening measured it
   // in the unfolded strip; empty when not known (then measured when needed).
   std::vector<double> arc;

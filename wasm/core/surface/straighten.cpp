@@ -8,7 +8,8 @@ namespace splinekit::surface {
 double corner_angle(const TriMesh& mesh, int face, int v) {
   const auto& t = mesh.triangles[face];
   const int k = corner_of(mesh, face, v);
-  const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[v], b = mesh.positions[t[(k + 2) % 3]] - mesh.positions[v];
+  const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[v],
+             b = mesh.positions[t[(k + 2) % 3]] - mesh.positions[v];
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
@@ -68,11 +69,13 @@ bool Straightener::run_of(int v, int at, int& first, int& last) const {
 }
 
 bool Straightener::on_left(const Apex& x) const {
-  return unfolded_.portals[std::clamp(x.portal, 0, static_cast<int>(unfolded_.portals.size()) - 1)].left_vertex == x.vertex;
+  return unfolded_.portals[std::clamp(x.portal, 0, static_cast<int>(unfolded_.portals.size()) - 1)].left_vertex ==
+         x.vertex;
 }
 
 bool Straightener::overlaps(int first, int last) const {
-  return std::any_of(flips_.begin(), flips_.begin() + used_, [&](const Flip& f) { return first <= f.last + 1 && f.first <= last + 1; });
+  return std::any_of(flips_.begin(), flips_.begin() + used_,
+                     [&](const Flip& f) { return first <= f.last + 1 && f.first <= last + 1; });
 }
 
 bool Straightener::is_frozen(int v) const { return std::find(frozen_.begin(), frozen_.end(), v) != frozen_.end(); }
@@ -119,10 +122,12 @@ bool Straightener::pass(PathStats* stats) {
     // A chord spans the faces around the neighbouring apices: look for room before tracing it.
     ChordRoom room{0, n - 1, n - 1};
     int unused;
-    const bool fits = options.chords && -neg_turn > options.chord_min_turn &&
-                      (apices_[j - 1].vertex < 0 || run_of(apices_[j - 1].vertex, apices_[j - 1].portal, room.p_first, unused)) &&
-                      (apices_[j + 1].vertex < 0 || run_of(apices_[j + 1].vertex, apices_[j + 1].portal, room.q_first, room.q_last)) &&
-                      !overlaps(room.p_first, room.q_last);
+    const bool fits =
+        options.chords && -neg_turn > options.chord_min_turn &&
+        (apices_[j - 1].vertex < 0 || run_of(apices_[j - 1].vertex, apices_[j - 1].portal, room.p_first, unused)) &&
+        (apices_[j + 1].vertex < 0 ||
+         run_of(apices_[j + 1].vertex, apices_[j + 1].portal, room.q_first, room.q_last)) &&
+        !overlaps(room.p_first, room.q_last);
     if (!fits || std::find(no_chord_.begin(), no_chord_.end(), made.vertex) != no_chord_.end() || !chord(j, room, made))
       zipper(j, made);
     if (!overlaps(made.first, made.last)) ++used_;
@@ -136,7 +141,8 @@ bool Straightener::pass(PathStats* stats) {
   double trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
   if (!(trial_length < length_ - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
     // Together they did not shorten the path: fall back to the largest turn alone.
-    const Flip* best = *std::max_element(chosen_.begin(), chosen_.end(), [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
+    const Flip* best = *std::max_element(chosen_.begin(), chosen_.end(),
+                                         [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
     chosen_.assign(1, best);
     apply(chosen_, trial_, trial_unfolded_, splice);
     trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
@@ -366,7 +372,8 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   };
   // Along the line from f on.
   auto along = [&]() {
-    for (size_t steps = exits.size(); q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip_.back(); ++steps) {
+    for (size_t steps = exits.size(); q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip_.back();
+         ++steps) {
       const int e = exit_edge(cf);
       if (e < 0 || steps > 4 * static_cast<size_t>(n)) return kFailed;
       if (past_q(cf, e)) return passed();
@@ -435,7 +442,8 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
 // Apply
 // =================================================================================================
 
-void Straightener::apply(const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u, Splice& splice) {
+void Straightener::apply(const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u,
+                         Splice& splice) {
   u.faces.clear(), u.corners.clear(), u.portals.clear();
   splice.path = &made_;
   splice.lo = chosen.front()->first;

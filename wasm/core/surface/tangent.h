@@ -30,8 +30,8 @@ double turning_angle(const TriMesh& mesh, const MeshPoint& p, const Tangent& in,
 struct StraightestGeodesic {
   std::vector<MeshPoint> points;  // start, every crossing (and vertex), end; consecutive ones share a face
   MeshPoint end;
-  Tangent end_direction;          // direction of travel at the end
-  double length = 0;              // length traced (shorter than asked when it met a boundary)
+  Tangent end_direction;  // direction of travel at the end
+  double length = 0;      // length traced (shorter than asked when it met a boundary)
   bool hit_boundary = false;
 };
 

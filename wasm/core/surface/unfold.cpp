@@ -122,7 +122,8 @@ namespace {
 void append_across(const TriMesh& mesh, UnfoldedStrip& u, int k, int face, const std::array<Vec2, 3>& corners) {
   const auto& t = mesh.triangles[u.faces.back()];
   const int k1 = (k + 1) % 3;
-  u.portals.push_back({t[k1], t[k], static_cast<int8_t>(k1), static_cast<int8_t>(k)});  // t[k] right, t[k+1] left of travel
+  u.portals.push_back(
+      {t[k1], t[k], static_cast<int8_t>(k1), static_cast<int8_t>(k)});  // t[k] right, t[k+1] left of travel
   u.faces.push_back(face);
   u.corners.push_back(corners);
 }

@@ -11,7 +11,7 @@ namespace splinekit::surface {
 // The edge between strip faces i and i+1: its end points are corners of face i (the end points'
 // places are those corners', so moving a layout moves only corners).
 struct Portal {
-  int left_vertex = -1, right_vertex = -1;  // left/right of the direction of travel
+  int left_vertex = -1, right_vertex = -1;   // left/right of the direction of travel
   int8_t left_corner = 0, right_corner = 0;  // their corners in face i
 };
 
@@ -22,7 +22,7 @@ inline Vec2 on_face(const std::array<Vec2, 3>& c, const MeshPoint& p) {
 
 struct UnfoldedStrip {
   std::vector<std::array<Vec2, 3>> corners;  // #strip: 2D positions of each face's corners (t[0], t[1], t[2])
-  std::vector<Portal> portals;                // #strip-1
+  std::vector<Portal> portals;               // #strip-1
   std::vector<int> faces;
 
   // A point on strip face i in the plane.
@@ -46,7 +46,9 @@ struct PlaneMotion {
   Vec2 t = Vec2::Zero();
   bool identity() const { return c == 1 && s == 0 && t.x() == 0 && t.y() == 0; }
   Vec2 operator()(const Vec2& x) const { return {c * x.x() - s * x.y() + t.x(), s * x.x() + c * x.y() + t.y()}; }
-  std::array<Vec2, 3> operator()(const std::array<Vec2, 3>& c3) const { return {(*this)(c3[0]), (*this)(c3[1]), (*this)(c3[2])}; }
+  std::array<Vec2, 3> operator()(const std::array<Vec2, 3>& c3) const {
+    return {(*this)(c3[0]), (*this)(c3[1]), (*this)(c3[2])};
+  }
   // The motion that takes a face laid at `was` to the same face laid at `now`.
   static PlaneMotion between(const std::array<Vec2, 3>& was, const std::array<Vec2, 3>& now);
 };
