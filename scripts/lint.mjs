@@ -11,16 +11,6 @@ const root = new URL('..', import.meta.url).pathname;
 /** Folders whose C++ sources clang-format checks. */
 export const CPP_DIRS = ['wasm', 'tests/native', 'bench/native'];
 
-/**
- * Whether a C++ file clang-format would change fails the check. Off until the C++ is reformatted
- * once with `npm run format` (the code predates .clang-format: 300 of its 10,926 lines would move);
- * while off, the check still runs and names the files that would change. Set
- * CPP_FORMAT_ENFORCED_BY_DEFAULT to true in the commit that follows that reformat;
- * SPLINEKIT_CPP_FORMAT=1 turns the check on for one run before then.
- */
-const CPP_FORMAT_ENFORCED_BY_DEFAULT = false;
-export const CPP_FORMAT_ENFORCED = CPP_FORMAT_ENFORCED_BY_DEFAULT || process.env.SPLINEKIT_CPP_FORMAT === '1';
-
 /** The C++ sources under CPP_DIRS (.cpp, .h), relative to the repository root, sorted. */
 export function cppFiles() {
   return CPP_DIRS.flatMap((dir) =>
@@ -53,9 +43,9 @@ if (import.meta.url === `file://${process.argv[1]}`) {
     const { stderr } = sh('clang-format', ['--dry-run', ...cppFiles()]);
     const files = unformatted(stderr);
     if (files.length > 0) {
-      if (CPP_FORMAT_ENFORCED) process.stderr.write(stderr);
-      console.log(`clang-format: ${files.length} C++ files would change (${CPP_FORMAT_ENFORCED ? 'failed' : 'not enforced yet: npm run format'}): ${files.join(' ')}`);
-      ok = ok && !CPP_FORMAT_ENFORCED;
+      process.stderr.write(stderr);
+      console.log(`clang-format: ${files.length} C++ files are not formatted (npm run format formats them): ${files.join(' ')}`);
+      ok = false;
     }
   }
   process.exit(ok ? 0 : 1);
