@@ -17,7 +17,9 @@ export const DEFAULT_TRACE_SCHEME: SurfaceScheme = 'olr';
 
 /**
  * Uniform subdivision levels used when `TraceOptions.levels` is omitted, per scheme: 5 for OLR,
- * 4 for RDC (the configurations BENCHMARKS.md measures and the README shows).
+ * 4 for RDC (the configurations BENCHMARKS.md measures and the README shows). The core decides
+ * them (`default_levels` in wasm/core/surface/curves.h: an omitted option reaches it unset); these
+ * are its numbers, for callers that show or store them, and a test holds the two equal.
  */
 export const DEFAULT_TRACE_LEVELS: Readonly<Record<SurfaceScheme, number>> = Object.freeze({ olr: 5, rdc: 4 });
 
@@ -31,13 +33,15 @@ export interface TraceOptions {
   adaptive?: number;
 }
 
-/** The binding's encoding of trace options, checked: [scheme code, levels, adaptive degrees (0: off)]. */
+/** The binding's encoding of trace options, checked: [scheme code, levels (-1: the core's default), adaptive degrees (0: off)]. */
 export function traceArgs(options: TraceOptions = {}): [number, number, number] {
   const scheme = options.scheme ?? DEFAULT_TRACE_SCHEME;
   const code = SURFACE_SCHEMES.indexOf(scheme);
   if (code < 0) throw new SplinekitError('invalid-input', `unknown scheme "${String(scheme)}" (use "olr" or "rdc")`);
-  const levels = options.levels ?? DEFAULT_TRACE_LEVELS[scheme];
-  if (!Number.isInteger(levels) || levels < 0 || levels > 12) throw new SplinekitError('invalid-input', `levels must be an integer from 0 to 12 (got ${levels})`);
+  // Omitted levels cross as -1: the core applies its default for the scheme.
+  const levels = options.levels ?? -1;
+  if (options.levels !== undefined && (!Number.isInteger(levels) || levels < 0 || levels > 12))
+    throw new SplinekitError('invalid-input', `levels must be an integer from 0 to 12 (got ${levels})`);
   const adaptive = options.adaptive ?? 0;
   if (options.adaptive !== undefined && !(adaptive > 0 && adaptive < 180))
     throw new SplinekitError('invalid-input', `the adaptive angle must lie between 0 and 180 degrees (got ${adaptive})`);

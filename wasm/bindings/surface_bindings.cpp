@@ -271,8 +271,8 @@ class SurfaceMeshHandle {
       options.adaptive = true;
       options.angle = adaptive_degrees * kPi / 180;
     } else {
-      if (levels < 0 || levels > 12) return fail("levels must lie between 0 and 12"), false;
-      options.levels = levels;
+      if (levels > 12) return fail("levels must lie between 0 and 12"), false;
+      options.levels = levels < 0 ? -1 : levels;  // -1: default_levels(scheme)
     }
     return true;
   }

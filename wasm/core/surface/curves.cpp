@@ -191,7 +191,7 @@ bool CurveTracer::flat(const Sides& sides, double angle) {
 }
 
 bool CurveTracer::rdc_stop(const RdcNode& node, int level, const TraceOptions& options) {
-  if (!options.adaptive) return level >= options.levels;
+  if (!options.adaptive) return level >= options.uniform_levels();
   return level >= options.max_levels || flat(node.sides, options.angle);
 }
 
@@ -350,7 +350,7 @@ void CurveTracer::olr_leaf(const ControlPolygon& polygon, double t, const TraceO
   interval = 0;
   for (level = 0;; ++level) {
     sides = sides_of(points);
-    if (options.adaptive ? olr_stop(sides, level, options) : level >= options.levels) return;
+    if (options.adaptive ? olr_stop(sides, level, options) : level >= options.uniform_levels()) return;
     const int m = interval;
     const int child = t <= std::ldexp(2.0 * m + 1, -(level + 1)) ? 0 : 1;
     std::array<Located, 4> here, next;
@@ -402,7 +402,7 @@ void CurveTracer::subdivide(const ControlPolygon& polygon, const TraceOptions& o
     }
     std::vector<Located> located;
     std::vector<GeodesicPath> sides;
-    olr_uniform(polygon, options.levels, located, sides);
+    olr_uniform(polygon, options.uniform_levels(), located, sides);
     for (const Located& p : located) points.push_back(p.point);
     return;
   }
@@ -426,7 +426,7 @@ void CurveTracer::trace(const ControlPolygon& polygon, const TraceOptions& optio
   if (!options.adaptive) {  // the last level's sides are the curve
     std::vector<Located> points;
     std::vector<GeodesicPath> sides;
-    olr_uniform(polygon, options.levels, points, sides);
+    olr_uniform(polygon, options.uniform_levels(), points, sides);
     for (const GeodesicPath& side : sides) append_path(side, polyline);
     return;
   }

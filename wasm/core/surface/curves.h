@@ -21,13 +21,21 @@ namespace splinekit::surface {
 
 enum class Scheme { kRDC, kOLR };
 
+// Uniform subdivision levels when TraceOptions::levels is left unset: 5 for OLR (35 points), 4 for
+// RDC (48 geodesic segments). The package's DEFAULT_TRACE_LEVELS (src/surface/trace-options.ts)
+// states the same numbers; tests/unit/surface-trace-defaults.test.ts holds them equal.
+constexpr int default_levels(Scheme scheme) { return scheme == Scheme::kOLR ? 5 : 4; }
+
 struct TraceOptions {
   Scheme scheme = Scheme::kOLR;
   bool adaptive = false;
-  int levels = 5;                           // uniform subdivision levels
+  int levels = -1;                          // uniform subdivision levels; negative: default_levels(scheme)
   double angle = 0.0872664626;              // adaptive threshold (radians; 5°)
   int max_levels = 10;                      // adaptive recursion bound (resolves cusps)
   SearchGraph search = SearchGraph::kDual;  // phase (i) graph of every shortest path (geodesic.h)
+
+  // The uniform levels in effect: `levels`, or the scheme's default when unset.
+  int uniform_levels() const { return levels >= 0 ? levels : default_levels(scheme); }
 };
 
 using ControlPolygon = std::array<MeshPoint, 4>;
