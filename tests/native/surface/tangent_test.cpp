@@ -52,7 +52,7 @@ void expect_steps_share_faces(const TriMesh& mesh, const std::vector<MeshPoint>&
     for (int f : {points[i].face, points[i + 1].face})
       for (int g : mesh.adjacency[f]) candidates.push_back(g);
     for (const MeshPoint& p : {points[i], points[i + 1]})
-      if (locate(mesh, p, 1e-7).kind == PointLocation::kVertex) {
+      if (locate(mesh, p, 1e-7).kind == PointLocation::Kind::kVertex) {
         std::vector<int> fan;
         bool closed;
         vertex_fan(mesh, locate(mesh, p, 1e-7).index, fan, closed);
@@ -191,7 +191,7 @@ TEST(SurfaceTangent, StraightestGeodesicThroughVerticesOnACylinder) {
     straightest_geodesic(mesh, p, cyl.direction(p, a), 3.5 * step, g);
     cyl.expect_end(g, 5 * c - 3.5 * c, dz + 3.5 * dz, "vertex to vertex");
     int vertices = 0;
-    for (const MeshPoint& q : g.points) vertices += locate(mesh, q, 1e-9).kind == PointLocation::kVertex;
+    for (const MeshPoint& q : g.points) vertices += locate(mesh, q, 1e-9).kind == PointLocation::Kind::kVertex;
     EXPECT_GE(vertices, 3);
     expect_steps_share_faces(mesh, g.points);
   }
@@ -315,7 +315,7 @@ TEST(SurfaceTangent, PolarAnglesRoundTripAtFacesEdgesAndVertices) {
   for (const TriMesh* mesh : {&plane, &cube}) {
     for (int f : {3, 9, 20}) {
       const MeshPoint p{f, Vec2(0.35, 0)};  // on edge (t0, t1)
-      ASSERT_EQ(locate(*mesh, p).kind, PointLocation::kEdge);
+      ASSERT_EQ(locate(*mesh, p).kind, PointLocation::Kind::kEdge);
       const int g = mesh->adjacency[f][0];
       ASSERT_GE(g, 0);
       round_trip(*mesh, p, "edge");
@@ -383,7 +383,7 @@ TEST(SurfaceTangent, LogAndExpMapsOnAPlane) {
     const Polar polar = log_map(solver, c, x);
     const Vec3 d = pos(mesh, x) - pos(mesh, c);
     EXPECT_NEAR(polar.radius, d.norm(), 1e-9);
-    if (locate(mesh, c).kind == PointLocation::kFace) {
+    if (locate(mesh, c).kind == PointLocation::Kind::kFace) {
       // The face frame: x along the face's first edge, y = n × x.
       const auto& t = mesh.triangles[c.face];
       const Vec3 ex = (mesh.positions[t[1]] - mesh.positions[t[0]]).normalized();

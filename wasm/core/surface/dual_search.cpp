@@ -14,14 +14,14 @@ namespace {
 void faces_of_point(const TriMesh& mesh, const MeshPoint& p, std::vector<int>& faces) {
   faces.clear();
   const PointLocation where = locate(mesh, p);
-  if (where.kind == PointLocation::kVertex) {
+  if (where.kind == PointLocation::Kind::kVertex) {
     bool closed;
     vertex_fan(mesh, where.index, faces, closed);
     if (std::find(faces.begin(), faces.end(), p.face) == faces.end()) faces.push_back(p.face);
     return;
   }
   faces.push_back(p.face);
-  if (where.kind == PointLocation::kEdge && mesh.adjacency[p.face][where.index] >= 0)
+  if (where.kind == PointLocation::Kind::kEdge && mesh.adjacency[p.face][where.index] >= 0)
     faces.push_back(mesh.adjacency[p.face][where.index]);
 }
 

@@ -45,7 +45,7 @@ bool walk_to(const TriMesh& mesh, const MeshPoint& p, int face, std::vector<int>
   MeshPoint on_from;
   if (!point_in_face(mesh, p, from, on_from)) return false;
   const PointLocation where = locate(mesh, on_from);
-  if (where.kind != PointLocation::kVertex) return false;
+  if (where.kind != PointLocation::Kind::kVertex) return false;
   bool closed;
   vertex_fan(mesh, where.index, fan, closed);
   const int n = static_cast<int>(fan.size());

@@ -386,16 +386,16 @@ MeshPoint vertex_point(const TriMesh& mesh, int vertex) {
 PointLocation locate(const TriMesh& mesh, const MeshPoint& p, double eps) {
   const Eigen::Vector3d w = weights(p);
   for (int k = 0; k < 3; ++k)
-    if (w[k] > 1 - eps) return {PointLocation::kVertex, mesh.triangles[p.face][k]};
+    if (w[k] > 1 - eps) return {PointLocation::Kind::kVertex, mesh.triangles[p.face][k]};
   for (int k = 0; k < 3; ++k)
-    if (w[k] < eps) return {PointLocation::kEdge, (k + 1) % 3};  // the edge opposite corner k
+    if (w[k] < eps) return {PointLocation::Kind::kEdge, (k + 1) % 3};  // the edge opposite corner k
   return {};
 }
 
 bool point_in_face(const TriMesh& mesh, const MeshPoint& p, int face, MeshPoint& out, double eps) {
   if (face == p.face) return out = p, true;
   const PointLocation where = locate(mesh, p, eps);
-  if (where.kind == PointLocation::kVertex) {
+  if (where.kind == PointLocation::Kind::kVertex) {
     const int k = corner_of(mesh, face, where.index);
     if (k < 0) return false;
     Eigen::Vector3d w = Eigen::Vector3d::Zero();
@@ -403,7 +403,7 @@ bool point_in_face(const TriMesh& mesh, const MeshPoint& p, int face, MeshPoint&
     out = from_weights(face, w);
     return true;
   }
-  if (where.kind == PointLocation::kEdge && mesh.adjacency[p.face][where.index] == face) {
+  if (where.kind == PointLocation::Kind::kEdge && mesh.adjacency[p.face][where.index] == face) {
     const Eigen::Vector3d w = weights(p);
     const auto& t = mesh.triangles[p.face];
     const int a = t[where.index], b = t[(where.index + 1) % 3];

@@ -119,7 +119,8 @@ inline int edge_to(const TriMesh& mesh, int face, int neighbor) {
 
 // Where a point sits: inside its face, on an edge (edge index), or on a vertex (mesh vertex).
 struct PointLocation {
-  enum Kind { kFace, kEdge, kVertex } kind = kFace;
+  enum class Kind { kFace, kEdge, kVertex };
+  Kind kind = Kind::kFace;
   int index = -1;  // edge index in the face (kEdge) or mesh vertex (kVertex)
 };
 PointLocation locate(const TriMesh& mesh, const MeshPoint& p, double eps = 1e-9);

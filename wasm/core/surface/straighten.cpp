@@ -327,11 +327,11 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   // q's place in the plane there. When the line passes q without meeting it, kPassed, and q's
   // place estimated from the face where it did: the point of that face's plane nearest to q, laid
   // with the face (exact for q on the face, off by the surface's turning between them otherwise).
-  enum Trace { kFailed, kReached, kPassed };
+  enum class Trace { kFailed, kReached, kPassed };
   Vec2 at;
   auto passed = [&]() {
     const Vec3 x = q.vertex >= 0 ? mesh_.positions[q.vertex] : eval_position(mesh_, end_);
-    return lay_point(mesh_, f, cf, x, at) ? kPassed : kFailed;
+    return lay_point(mesh_, f, cf, x, at) ? Trace::kPassed : Trace::kFailed;
   };
   // Whether the line leaves p through face g laid at c (its corner at p holds the line).
   auto leaves_p = [&](int g, const std::array<Vec2, 3>& c) {
@@ -375,13 +375,13 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
     for (size_t steps = exits.size(); q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip_.back();
          ++steps) {
       const int e = exit_edge(cf);
-      if (e < 0 || steps > 4 * static_cast<size_t>(n)) return kFailed;
+      if (e < 0 || steps > 4 * static_cast<size_t>(n)) return Trace::kFailed;
       if (past_q(cf, e)) return passed();
       exits.push_back(static_cast<int8_t>(e));
-      if (!step(e)) return kFailed;
+      if (!step(e)) return Trace::kFailed;
     }
     at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)] : on_face(cf, end_);
-    return kReached;
+    return Trace::kReached;
   };
   // The walk along a new d: as far as it takes the same way as the last one (the same turn around
   // p, the same exits from the same faces, laid alike), the last one's; on from where they part.
@@ -392,7 +392,7 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
       for (int g = strip_[first];; ++s) {
         const bool holds = leaves_p(g, *c);
         if (s == around && holds) break;
-        if (s == around || holds) return turn_around_p() ? along() : kFailed;
+        if (s == around || holds) return turn_around_p() ? along() : Trace::kFailed;
         g = other[s], c = &laid[s];
       }
     }
@@ -405,14 +405,14 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
     for (int g : other) on_strip = follow_strip(on_strip, g);
     return along();
   };
-  Trace traced = turn_around_p() ? along() : kFailed;
+  Trace traced = turn_around_p() ? along() : Trace::kFailed;
   // The surface between turned the line: aim again where the line's faces put q (once).
-  if (traced == kPassed || (traced == kReached && std::abs(cross(d, at - o)) > 1e-3 * d.squaredNorm())) {
+  if (traced == Trace::kPassed || (traced == Trace::kReached && std::abs(cross(d, at - o)) > 1e-3 * d.squaredNorm())) {
     if (!((at - o).squaredNorm() > 0)) return false;
     d = at - o;
     traced = walk_again();
   }
-  if (traced != kReached) return false;
+  if (traced != Trace::kReached) return false;
   // The path from p to q through the line's faces is at least |at - o| long, so the chord cannot
   // help unless that beats the way by v.
   if ((at - o).norm() >= (apices_[j].pos - p.pos).norm() + (q.pos - apices_[j].pos).norm()) return false;

@@ -125,7 +125,7 @@ void barycentric_gradients(const TriMesh& mesh, int f, Vec3 grad[3]) {
 Tangent tangent_in_face(const TriMesh& mesh, const MeshPoint& p, const Tangent& t, int g) {
   if (t.face == g) return t;
   const PointLocation where = locate(mesh, p, 1e-7);
-  if (where.kind == PointLocation::kVertex) {
+  if (where.kind == PointLocation::Kind::kVertex) {
     Fan fan;
     build_fan(mesh, where.index, fan);
     if (fan.index_of(t.face) < 0 || fan.index_of(g) < 0) return {g, t.dir};
@@ -138,7 +138,7 @@ Tangent tangent_in_face(const TriMesh& mesh, const MeshPoint& p, const Tangent& 
 
 double polar_angle(const TriMesh& mesh, const MeshPoint& p, const Tangent& t) {
   const PointLocation where = locate(mesh, p, 1e-7);
-  if (where.kind == PointLocation::kVertex) {
+  if (where.kind == PointLocation::Kind::kVertex) {
     Fan fan;
     build_fan(mesh, where.index, fan);
     const int f = fan.index_of(t.face) >= 0 ? t.face : fan.faces.front();
@@ -156,7 +156,7 @@ double polar_angle(const TriMesh& mesh, const MeshPoint& p, const Tangent& t) {
 
 Tangent polar_tangent(const TriMesh& mesh, const MeshPoint& p, double angle) {
   const PointLocation where = locate(mesh, p, 1e-7);
-  if (where.kind == PointLocation::kVertex) {
+  if (where.kind == PointLocation::Kind::kVertex) {
     Fan fan;
     build_fan(mesh, where.index, fan);
     double phi = angle;
@@ -177,7 +177,7 @@ Tangent polar_tangent(const TriMesh& mesh, const MeshPoint& p, double angle) {
 
 double turning_angle(const TriMesh& mesh, const MeshPoint& p, const Tangent& in, const Tangent& out) {
   const PointLocation where = locate(mesh, p, 1e-7);
-  if (where.kind == PointLocation::kVertex) {
+  if (where.kind == PointLocation::Kind::kVertex) {
     Fan fan;
     build_fan(mesh, where.index, fan);
     if (fan.index_of(in.face) >= 0 && fan.index_of(out.face) >= 0) {
@@ -213,7 +213,7 @@ void straightest_geodesic(const TriMesh& mesh, const MeshPoint& p, const Tangent
   // At a vertex start, begin on the face whose corner holds the direction.
   {
     const PointLocation where = locate(mesh, cur, 1e-7);
-    if (where.kind == PointLocation::kVertex) {
+    if (where.kind == PointLocation::Kind::kVertex) {
       Fan fan;
       build_fan(mesh, where.index, fan);
       if (fan.index_of(d.face) >= 0) {
@@ -226,7 +226,7 @@ void straightest_geodesic(const TriMesh& mesh, const MeshPoint& p, const Tangent
   constexpr double kVertexEps = 1e-7;
   double remaining = length;
   int entry_edge = -1;
-  bool leaving_vertex = locate(mesh, cur, kVertexEps).kind == PointLocation::kVertex;
+  bool leaving_vertex = locate(mesh, cur, kVertexEps).kind == PointLocation::Kind::kVertex;
   Vec3 grad[3];
   const size_t guard = 4 * mesh.triangles.size() + 64;
   for (size_t step = 0; step < guard; ++step) {
