@@ -5,6 +5,7 @@ import type { AnchorSelection } from '../app/state.js';
 import { CONTINUITY_COLORS, CONTINUITY_DESCRIPTIONS } from '../overlay/colors.js';
 import { h, noFocusOnClick } from '../ui/dom.js';
 import { facts, section } from '../ui/panel.js';
+import type { SkippedShape } from '../view2d/drawing.js';
 import type { ViewPointer } from '../view2d/view2d.js';
 
 /** Kinds in the order the override buttons show them. */
@@ -28,6 +29,8 @@ export class DocumentMode implements Mode {
   private legend = h('ul', { class: 'legend' });
   private junction = h('div', { class: 'junction', 'data-testid': 'junction' });
   private warnings = h('ul', { class: 'warnings', 'data-testid': 'warnings' });
+  /** Shapes the last drawing left out (they failed to tessellate or stroke). */
+  private skipped: SkippedShape[] = [];
 
   activate(ctx: ModeContext): void {
     this.ctx = ctx;
@@ -45,7 +48,11 @@ export class DocumentMode implements Mode {
       }),
       state.events.on('selection', () => this.showJunction()),
       state.events.on('overlay', () => this.showJunction()),
-      view.events.on('drawing', (s) => this.info.set('Mesh', `${s.triangles.toLocaleString('en-US')} triangles in ${s.ms.toFixed(0)} ms`)),
+      view.events.on('drawing', (s) => {
+        this.info.set('Mesh', `${s.triangles.toLocaleString('en-US')} triangles in ${s.ms.toFixed(0)} ms`);
+        this.skipped = s.skipped;
+        this.showWarnings();
+      }),
     );
     this.refresh();
   }
@@ -180,10 +187,13 @@ export class DocumentMode implements Mode {
 
   private showWarnings(): void {
     const doc = this.ctx?.state.doc;
-    if (!doc || doc.warnings.length === 0) {
+    if (!doc || doc.warnings.length + this.skipped.length === 0) {
       this.warnings.replaceChildren(h('li', { class: 'none' }, doc ? 'None: everything drawn is in the model.' : '—'));
       return;
     }
-    this.warnings.replaceChildren(...doc.warnings.map((w) => h('li', { title: w.code }, w.message)));
+    this.warnings.replaceChildren(
+      ...this.skipped.map((s) => h('li', { title: 'not drawn', class: 'skipped' }, `${s.element}: not drawn (${s.reason})`)),
+      ...doc.warnings.map((w) => h('li', { title: w.code }, w.message)),
+    );
   }
 }

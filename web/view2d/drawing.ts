@@ -17,11 +17,21 @@ import type { SvgDocument } from '../../src/index.js';
 import { cssColor } from './color.js';
 import { flattenSpline } from './tessellate.js';
 
+/** A shape the drawing left out because it could not be tessellated or stroked. */
+export interface SkippedShape {
+  /** The element as a user finds it in the file: `<path id="leg"> at line 12`. */
+  element: string;
+  /** What failed. */
+  reason: string;
+}
+
 export interface DrawingStats {
   vertices: number;
   triangles: number;
   /** Time to tessellate and triangulate, in milliseconds. */
   ms: number;
+  /** Shapes that failed to draw; everything else was drawn. */
+  skipped: SkippedShape[];
 }
 
 /** Growable vertex/color/index buffers for one merged mesh. */
@@ -39,6 +49,17 @@ class MeshBuffers {
   setColor(rgba: readonly [number, number, number, number], alpha: number): [number, number, number, number] {
     this.color.setRGB(rgba[0], rgba[1], rgba[2], SRGBColorSpace);
     return [this.color.r, this.color.g, this.color.b, alpha];
+  }
+
+  /** Buffer lengths, to roll back a shape that fails half-way. */
+  mark(): [number, number, number] {
+    return [this.positions.length, this.colors.length, this.indices.length];
+  }
+
+  rollback([p, c, i]: [number, number, number]): void {
+    this.positions.length = p;
+    this.colors.length = c;
+    this.indices.length = i;
   }
 
   addVertices(xyz: ArrayLike<number>, count: number, rgba: readonly number[]): void {
@@ -59,17 +80,35 @@ class MeshBuffers {
  * The document painted from its spline model as one mesh: for every visible shape in document
  * order, its fill (fill-rule and holes through ShapePath.toShapes) then its stroke
  * (SVGLoader.pointsToStroke on the flattened splines, width scaled by the shape's transform).
- * Colors and alpha are per vertex, so a single draw call keeps the painter's order.
+ * Colors and alpha are per vertex, so a single draw call keeps the painter's order. A shape that
+ * fails to tessellate or stroke is left out whole and listed in `stats.skipped`, naming its element;
+ * the rest of the drawing is drawn.
  */
 export function buildDrawing(doc: SvgDocument, tolerance: number): { mesh: Mesh; stats: DrawingStats } {
   const t0 = performance.now();
   const buffers = new MeshBuffers();
   const stroke: number[] = [];
   const xyz: number[] = [];
+  // SVGLoader writes stroke UVs here; without a buffer its square caps read uvs[7] of undefined.
+  const uvs: number[] = [];
+  const skipped: SkippedShape[] = [];
 
   doc.shapes.forEach((shape, i) => {
     const style = shape.style;
     if (!style.visible || shape.splineCount === 0) return;
+    const before = buffers.mark();
+    try {
+      drawShape(i);
+    } catch (err) {
+      buffers.rollback(before);
+      const element = `<${shape.tag}${shape.id ? ` id="${shape.id}"` : ''}>${shape.line ? ` at line ${shape.line}` : ''}`;
+      skipped.push({ element, reason: err instanceof Error ? err.message : String(err) });
+    }
+  });
+
+  function drawShape(i: number): void {
+    const shape = doc.shapes[i];
+    const style = shape.style;
     const lines: Vector2[][] = doc.splinesOf(i).map((s) => flattenSpline(s, tolerance));
 
     const fill = cssColor(doc.paintColor(style.fill) ?? 'none');
@@ -103,7 +142,8 @@ export function buildDrawing(doc: SvgDocument, tolerance: number): { mesh: Mesh;
       for (const line of lines) {
         if (line.length < 2) continue;
         stroke.length = 0;
-        SVGLoader.pointsToStrokeWithBuffers(line, pen, 6, tolerance * 0.01, stroke, undefined, undefined, 0);
+        uvs.length = 0;
+        SVGLoader.pointsToStrokeWithBuffers(line, pen, 6, tolerance * 0.01, stroke, undefined, uvs, 0);
         // Count what was written: three r187 returns the number of coordinates, not vertices.
         const count = stroke.length / 3;
         const base = buffers.vertexCount;
@@ -111,7 +151,7 @@ export function buildDrawing(doc: SvgDocument, tolerance: number): { mesh: Mesh;
         for (let v = 0; v < count; v++) buffers.indices.push(base + v);
       }
     }
-  });
+  }
 
   const geometry = buffers.toGeometry();
   const material = new MeshBasicMaterial({
@@ -126,6 +166,6 @@ export function buildDrawing(doc: SvgDocument, tolerance: number): { mesh: Mesh;
   mesh.name = 'drawing';
   return {
     mesh,
-    stats: { vertices: buffers.vertexCount, triangles: buffers.indices.length / 3, ms: performance.now() - t0 },
+    stats: { vertices: buffers.vertexCount, triangles: buffers.indices.length / 3, ms: performance.now() - t0, skipped },
   };
 }
