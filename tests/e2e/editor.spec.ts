@@ -108,6 +108,20 @@ test('the control-point overlay toggles', async ({ page }) => {
   expect(c1Again).toBe(c1);
 });
 
+/** `<use>`s that double at each of `levels` levels: 2^levels copies of one path. */
+function useDoubling(levels: number): string {
+  let body = '<defs><path id="l0" d="M0 0 L1 1"/>';
+  for (let i = 1; i <= levels; i++) body += `<g id="l${i}"><use href="#l${i - 1}"/><use href="#l${i - 1}"/></g>`;
+  return `<svg xmlns="http://www.w3.org/2000/svg">${body}</defs><use href="#l${levels}"/></svg>`;
+}
+
+/** "Billion laughs": nine levels of entities, each ten of the one before. */
+function entityBomb(): string {
+  let dtd = '<!ENTITY lol0 "lol">';
+  for (let i = 1; i <= 9; i++) dtd += `<!ENTITY lol${i} "${`&lol${i - 1};`.repeat(10)}">`;
+  return `<?xml version="1.0"?><!DOCTYPE svg [${dtd}]><svg xmlns="http://www.w3.org/2000/svg"><text>&lol9;</text></svg>`;
+}
+
 test('bad input shows an error and keeps the document', async ({ page }) => {
   await openEditor(page);
   const before = await editorState(page);
@@ -120,6 +134,10 @@ test('bad input shows an error and keeps the document', async ({ page }) => {
     { name: 'path.svg', buffer: Buffer.from('<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 L 10 oops"/></svg>'), message: /path\.svg/ },
     { name: 'nan.svg', buffer: Buffer.from('<svg xmlns="http://www.w3.org/2000/svg"><circle cx="NaN" cy="0" r="Infinity"/></svg>'), message: /nan\.svg/ },
     { name: 'page.html', buffer: Buffer.from('<html><body>not an svg</body></html>'), message: /page\.html: the root element is <html>/ },
+    // Hostile files end cleanly, at once, with the page still working (issue 19).
+    { name: 'use-bomb.svg', buffer: Buffer.from(useDoubling(24)), message: /use-bomb\.svg: <g id="l\d+"> at line 1 draws more than 200,000 elements/ },
+    { name: 'deep.svg', buffer: Buffer.from(`<svg xmlns="http://www.w3.org/2000/svg">${'<g>'.repeat(20_000)}${'</g>'.repeat(20_000)}</svg>`), message: /deep\.svg: <g> at line 1 is nested deeper than 1,000 levels/ },
+    { name: 'lol.svg', buffer: Buffer.from(entityBomb()), message: /lol\.svg: its DTD entities expand to more than/ },
   ];
   const error = page.getByTestId('status-error');
   for (const c of cases) {
@@ -145,6 +163,39 @@ test('bad input shows an error and keeps the document', async ({ page }) => {
   await waitForFile(page, 'oc_dog.svg');
   await expect(error).toBeHidden();
   expect((await editorState(page)).error).toBeNull();
+});
+
+test('an Illustrator export and open square-capped strokes open and draw', async ({ page }) => {
+  await openEditor(page);
+  // Illustrator's "SVG 1.1" export declares its namespaces as DTD entities; Inkscape and
+  // openclipart files use square caps on open paths (three.js's stroker used to throw on them).
+  const illustrator = `<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd" [
+  <!ENTITY ns_ai "http://ns.adobe.com/AdobeIllustrator/10.0/">
+  <!ENTITY ns_svg "http://www.w3.org/2000/svg">
+  <!ENTITY ns_xlink "http://www.w3.org/1999/xlink">
+]>
+<svg version="1.1" xmlns:i="&ns_ai;" xmlns="&ns_svg;" xmlns:xlink="&ns_xlink;" width="200px" height="200px" viewBox="0 0 200 200">
+  <rect x="0" y="0" width="200" height="200" fill="#ffffff"/>
+  <path d="M20 100 L180 100 M100 20 L100 60" fill="none" stroke="#1030c0" stroke-width="24" stroke-linecap="square"/>
+</svg>`;
+  await page.getByTestId('file-input').setInputFiles({ name: 'ai-export.svg', mimeType: 'image/svg+xml', buffer: Buffer.from(illustrator) });
+  await waitForFile(page, 'ai-export.svg');
+  const state = await editorState(page);
+  expect(state.error).toBeNull();
+  await frames(page);
+  const [square] = await countColors(page, ['#1030c0'], 24);
+  // The same file with butt caps: the four square caps add 4 × (12 × 24) to the strokes' 200 × 24
+  // (in document units), 24% more blue.
+  await page.getByTestId('file-input').setInputFiles({ name: 'butt.svg', mimeType: 'image/svg+xml', buffer: Buffer.from(illustrator.replace('square', 'butt')) });
+  await waitForFile(page, 'butt.svg');
+  await frames(page);
+  const [butt] = await countColors(page, ['#1030c0'], 24);
+  expect(butt, 'pixels of the butt-capped strokes').toBeGreaterThan(2000);
+  expect(square / butt).toBeGreaterThan(1.15);
+  expect(square / butt).toBeLessThan(1.33);
+  await expect(page.getByTestId('warnings')).toBeVisible();
+  await expect(page.getByTestId('warnings')).not.toContainText('not drawn');
 });
 
 test('a continuity override is undoable', async ({ page }) => {
