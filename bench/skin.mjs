@@ -4,6 +4,7 @@ import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { SkinRig, SkinWeights, SplineSet, buildDomain, domainWeights, memory, outlineSamples, parseSVG } from '../dist/index.js';
 import { mulberry32 } from '../dist/core/random.js';
+import { farthestPoints } from '../dist/core/farthest-points.js';
 
 /** `count` handles spread over the artwork: farthest-point sampling of on-curve points. */
 export function spreadHandles(doc, count) {
@@ -120,21 +121,6 @@ export function skinWeightsSpeed(data) {
   return out;
 }
 
-/** `count` of the points (x,y pairs), spread out by farthest-point sampling from the first. */
-function spreadOut(points, count) {
-  const n = points.length / 2, chosen = [0], dist = new Float64Array(n).fill(Infinity);
-  while (chosen.length < count) {
-    const last = chosen[chosen.length - 1];
-    let best = 0;
-    for (let p = 0; p < n; p++) {
-      dist[p] = Math.min(dist[p], Math.hypot(points[2 * p] - points[2 * last], points[2 * p + 1] - points[2 * last + 1]));
-      if (dist[p] > dist[best]) best = p;
-    }
-    chosen.push(best);
-  }
-  return Float64Array.from(chosen.flatMap((p) => [points[2 * p], points[2 * p + 1]]));
-}
-
 /**
  * Median wall-clock and CPU ms (user + system, this process) of `repeats` runs of fn (each given
  * the run's index), with the last run's result. On a shared machine the CPU time is the steadier.
@@ -166,7 +152,7 @@ export function skinWeightSteps(data, repeats = 3) {
   const set = SplineSet.from(doc.splines);
   const samples = set.sample(8);
   set.dispose();
-  const handles = spreadOut(samples, 8);
+  const handles = farthestPoints(samples, 8);
   const small = buildDomain(samples, handles, { targetTriangles: 500 });
   SkinWeights.harmonic(small).dispose(); // warm-up of the solver paths
   SkinWeights.bbw(small).dispose();

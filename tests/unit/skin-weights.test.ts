@@ -7,24 +7,10 @@ import { SplineSet, SplinekitError, init, memory, parseSVG } from '../../src/ind
 import { buildDomain, type Domain } from '../../src/skin/domain.js';
 import { SkinWeights } from '../../src/skin/weights.js';
 import { readShared } from './helpers.js';
+import { farthestPoints } from '../../src/core/farthest-points.js';
 
 let samples: Float64Array;
 let handles: Float64Array;
-
-/** `count` of the points, spread out by farthest-point sampling (deterministic). */
-function spreadOut(points: Float64Array, count: number): Float64Array {
-  const n = points.length / 2, chosen = [0], dist = new Float64Array(n).fill(Infinity);
-  while (chosen.length < count) {
-    const last = chosen[chosen.length - 1];
-    let best = 0;
-    for (let p = 0; p < n; p++) {
-      dist[p] = Math.min(dist[p], Math.hypot(points[2 * p] - points[2 * last], points[2 * p + 1] - points[2 * last + 1]));
-      if (dist[p] > dist[best]) best = p;
-    }
-    chosen.push(best);
-  }
-  return Float64Array.from(chosen.flatMap((p) => [points[2 * p], points[2 * p + 1]]));
-}
 
 function signedArea(d: Domain, t: number): number {
   const [a, b, c] = [d.triangles[3 * t], d.triangles[3 * t + 1], d.triangles[3 * t + 2]];
@@ -65,7 +51,7 @@ beforeAll(async () => {
   const set = SplineSet.from(doc.splines);
   samples = set.sample(8);
   set.dispose();
-  handles = spreadOut(samples, 6);
+  handles = farthestPoints(samples, 6);
 });
 
 describe('skin domain', () => {
