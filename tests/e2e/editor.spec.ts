@@ -249,7 +249,7 @@ test('a continuity override is undoable', async ({ page }) => {
   expect((await editorState(page)).selection).toBeNull();
 });
 
-test('opening a file is undoable', async ({ page }) => {
+test('opening a file is undoable, and a file that cannot be opened loses nothing', async ({ page }) => {
   await openEditor(page);
   const owlPixels = await fingerprint(page);
   const undo = page.getByRole('button', { name: 'Undo' });
@@ -277,6 +277,25 @@ test('opening a file is undoable', async ({ page }) => {
   await page.keyboard.press('Control+z');
   await waitForFile(page, OWL);
   await page.keyboard.press('Control+Shift+z');
+  await waitForFile(page, 'oc_dog.svg');
+
+  // A file that cannot be opened loses nothing: the drawing, its undo history and its autosave stay.
+  const saved = await page.evaluate(() => localStorage.getItem('splinekit:session'));
+  expect(saved).toContain('oc_dog.svg');
+  await page.getByTestId('file-input').setInputFiles({ name: 'bomb.svg', mimeType: 'image/svg+xml', buffer: Buffer.from(useDoubling(24)) });
+  await expect(page.getByTestId('status-error')).toContainText('bomb.svg');
+  state = await editorState(page);
+  expect([state.file, state.segments, state.canUndo]).toEqual(['oc_dog.svg', 220, true]);
+  expectSameFingerprint(await fingerprint(page), dogPixels);
+  expect(await page.evaluate(() => localStorage.getItem('splinekit:session'))).toBe(saved);
+  await undo.click();
+  await waitForFile(page, OWL);
+  await redo.click();
+  await waitForFile(page, 'oc_dog.svg');
+  // And a reload brings the drawing back from the autosave.
+  await page.reload();
+  await page.waitForFunction(() => window.splinekitEditor !== undefined);
+  await page.evaluate(() => window.splinekitEditor!.ready);
   await waitForFile(page, 'oc_dog.svg');
 });
 
