@@ -69,6 +69,14 @@ std::vector<int> strip_through(const TriMesh& mesh, const std::vector<MeshPoint>
 
 MeshPoint at_xy(const TriMesh& mesh, double x, double y) { return testing::point_at(mesh, Vec3(x, y, 0)); }
 
+// The faces around vertex v, in order (empty when v's fan is open: on a boundary).
+std::vector<int> closed_fan(const TriMesh& mesh, int v) {
+  std::vector<int> fan;
+  bool closed;
+  vertex_fan(mesh, v, fan, closed);
+  return closed ? fan : std::vector<int>{};
+}
+
 // ---- Semi-star ----------------------------------------------------------------------------------
 
 TEST(StraightenerFlip, TakesTheOtherSemiStarOfAFlatVertex) {
@@ -76,10 +84,7 @@ TEST(StraightenerFlip, TakesTheOtherSemiStarOfAFlatVertex) {
   // path between the centroids of its ends bends at the vertex. Its other semi-star is the other 2.
   const TriMesh mesh = testing::build(testing::planar_grid(4, 1, 0));
   const int v = vertex_near(mesh, {0.5, 0.5, 0});
-  std::vector<int> fan;
-  bool closed;
-  vertex_fan(mesh, v, fan, closed);
-  ASSERT_TRUE(closed);
+  const std::vector<int> fan = closed_fan(mesh, v);
   ASSERT_EQ(fan.size(), 8u);
   const std::vector<int> strip(fan.begin(), fan.begin() + 6);
   const MeshPoint a = centroid(strip.front()), b = centroid(strip.back());
@@ -130,9 +135,7 @@ Arrays saddle() {
 TEST(StraightenerFlip, FreezesASaddleVertexThePathGoesStraightThrough) {
   const TriMesh mesh = testing::build(saddle());
   const int v = vertex_near(mesh, Vec3::Zero());
-  std::vector<int> fan;
-  bool closed;
-  vertex_fan(mesh, v, fan, closed);
+  const std::vector<int> fan = closed_fan(mesh, v);
   ASSERT_EQ(fan.size(), 6u);
   // The angle sum, and the strip's half: 3 faces around v between the centroids of the outer two.
   double theta = 0;
@@ -386,10 +389,8 @@ TEST(StraightenerApply, MakesSeveralFlipsAtOnceAsAFreshLayoutWould) {
 
 TEST(StraightenerPass, OnePassStraightensAFlatVertexAndTheNextFindsNothing) {
   const TriMesh mesh = testing::build(testing::planar_grid(4, 1, 0));
-  const int v = vertex_near(mesh, {0.5, 0.5, 0});
-  std::vector<int> fan;
-  bool closed;
-  vertex_fan(mesh, v, fan, closed);
+  const std::vector<int> fan = closed_fan(mesh, vertex_near(mesh, {0.5, 0.5, 0}));
+  ASSERT_EQ(fan.size(), 8u);
   const std::vector<int> strip(fan.begin(), fan.begin() + 6);
   const MeshPoint a = centroid(strip.front()), b = centroid(strip.back());
   std::vector<int> marks(mesh.triangles.size(), -1);
