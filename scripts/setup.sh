@@ -70,7 +70,7 @@ build build/wasm
 
 # ---- TypeScript package: dist/ (rebuilt when anything in src/ is newer) ------------------------
 stamp=dist/.build-stamp
-if [ ! -f "$stamp" ] || [ -n "$(find src tsconfig.json package.json -newer "$stamp" -print -quit)" ]; then
+if [ ! -f "$stamp" ] || [ -n "$(find src tsconfig.json package.json scripts/browser-bundle.config.ts -newer "$stamp" -print -quit)" ]; then
   step "building the TypeScript package (dist/)"
   rm -rf dist
   npx tsc -p tsconfig.json

@@ -11,12 +11,12 @@ mkdirSync(`${root}build`, { recursive: true });
 let passed = 0;
 let failed = 0;
 
-function run(cmd, args, env = {}, { echo = true } = {}) {
+function run(cmd, args, env = {}) {
   return new Promise((resolve) => {
     let output = '';
     const child = spawn(cmd, args, { cwd: root, env: { ...process.env, ...env }, stdio: ['ignore', 'pipe', 'pipe'] });
-    child.stdout.on('data', (d) => { output += d; if (echo) process.stdout.write(d); });
-    child.stderr.on('data', (d) => { output += d; if (echo) process.stderr.write(d); });
+    child.stdout.on('data', (d) => { output += d; process.stdout.write(d); });
+    child.stderr.on('data', (d) => { output += d; process.stderr.write(d); });
     child.on('error', (err) => { output += String(err); });
     child.on('close', (code) => resolve({ code: code ?? 1, output }));
   });
@@ -46,9 +46,10 @@ console.log('\n== lint (eslint, clang-format) ==');
     failed += 1;
     finish(false);
   }
-  const cf = await run('clang-format', ['--dry-run', '--Werror', ...cppFiles()]);
+  const cpp = cppFiles();
+  const cf = await run('clang-format', ['--dry-run', '--Werror', ...cpp]);
   if (cf.code === 0) {
-    console.log(`clang-format: ${cppFiles().length} C++ files formatted`);
+    console.log(`clang-format: ${cpp.length} C++ files formatted`);
     passed += 1;
   } else {
     console.log(`clang-format: ${unformatted(cf.output).length} C++ files are not formatted (npm run format formats them)`);

@@ -6,6 +6,7 @@ import { init } from '../src/index.js';
 import { Editor } from './app/editor.js';
 import { installTestHook } from './app/test-hook.js';
 import './styles.css';
+import { messageOf } from './app/errors.js';
 
 const root = document.getElementById('app');
 if (!root) throw new Error('index.html has no #app element');
@@ -16,7 +17,7 @@ async function start(): Promise<void> {
   try {
     await init();
   } catch (err) {
-    editor.state.setError(err instanceof Error ? err.message : String(err));
+    editor.state.setError(messageOf(err));
     return;
   } finally {
     editor.state.setBusy(null);
@@ -27,7 +28,7 @@ async function start(): Promise<void> {
     const restored = await editor.restoreSession();
     if (!restored && samples.length > 0) await editor.openSample(samples[0], { undoable: false });
   } catch (err) {
-    editor.state.setError(err instanceof Error ? err.message : String(err));
+    editor.state.setError(messageOf(err));
   }
   await editor.view.nextFrame();
 }

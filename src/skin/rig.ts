@@ -7,7 +7,6 @@ import { splineSetHandles } from '../spline/spline-set-handle.js';
 import { CONTINUITY_KINDS, type ContinuityKind } from '../spline/spline.js';
 import type { SvgDocument } from '../svg/document.js';
 
-export { IDENTITY_MATRIX, type AffineMatrix } from '../core/affine.js';
 
 /**
  * Linear blend skinning of a drawing whose output stays cubic Bézier splines with their

@@ -1,8 +1,8 @@
 /**
  * How curves on a mesh are traced (b/Surf §4): the options, their defaults, and their encoding for
- * the binding. The defaults live here once; traceBezier, SurfaceSpline, the CLI and the editor
- * take them from here (the binding always receives all three values, so the core's own
- * `TraceOptions` defaults in wasm/core/surface/curves.h never apply to the package).
+ * the binding. The core owns the defaults (`default_levels` in wasm/core/surface/curves.h): omitted
+ * levels cross as -1. DEFAULT_TRACE_SCHEME / DEFAULT_TRACE_LEVELS state them for the CLI and the
+ * editor, and a test keeps them equal to what the core traces.
  */
 import { SplinekitError } from '../core/errors.js';
 

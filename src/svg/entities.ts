@@ -27,6 +27,8 @@ const ENTITY_EXPANSION_SLACK = 1 << 20;
 
 const PREDEFINED = new Set(['lt', 'gt', 'amp', 'quot', 'apos']);
 const NAME = '[A-Za-z_:][\\w.:\\-\\u00B7-\\uFFFF]*';
+/** A general entity's declaration: name, then a quoted value or an external id. */
+const ENTITY_DECL = new RegExp(`^<!ENTITY\\s+(${NAME})\\s+(?:"([^"]*)"|'([^']*)'|(SYSTEM|PUBLIC)\\b)`);
 
 interface Declarations {
   internal: Map<string, string>;
@@ -138,7 +140,7 @@ function readDeclarations(text: string): Declarations | null {
       const start = k;
       k = declarationEnd(text, k);
       if (k < 0) return null;
-      const decl = new RegExp(`^<!ENTITY\\s+(${NAME})\\s+(?:"([^"]*)"|'([^']*)'|(SYSTEM|PUBLIC)\\b)`).exec(text.slice(start, k));
+      const decl = ENTITY_DECL.exec(text.slice(start, k));
       if (decl && !PREDEFINED.has(decl[1]) && !internal.has(decl[1]) && !external.has(decl[1])) {
         // The first declaration of a name binds (XML 1.0 §4.2).
         if (decl[4]) external.add(decl[1]);

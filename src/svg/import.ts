@@ -156,6 +156,11 @@ function lineOf(el: Element): number {
   return (el as unknown as { lineNumber?: number }).lineNumber ?? 0;
 }
 
+/** A `<use>`'s reference: href, or the older xlink:href. */
+function hrefOf(el: Element): string | null {
+  return el.getAttribute('href') ?? el.getAttributeNS(XLINK_NS, 'href') ?? el.getAttribute('xlink:href');
+}
+
 function describe(el: Element): string {
   const id = el.getAttribute('id');
   const line = lineOf(el);
@@ -206,7 +211,7 @@ class Builder {
     const visiting = new Set<Element>();
     const count = (el: Element, depth: number): number => {
       if (depth > this.maxDepth) {
-        throw new SplinekitError('too-complex', `${this.name}: ${describe(el)} is nested deeper than ${this.maxDepth.toLocaleString('en-US')} levels: refused`);
+        this.tooDeep(el);
       }
       const known = counts.get(el);
       if (known !== undefined) return known;
@@ -243,8 +248,12 @@ class Builder {
 
   /** The element a `<use>` refers to in this file, if any. */
   private referenced(use: Element): Element | undefined {
-    const href = use.getAttribute('href') ?? use.getAttributeNS(XLINK_NS, 'href') ?? use.getAttribute('xlink:href');
+    const href = hrefOf(use);
     return href?.startsWith('#') ? this.ids.get(href.slice(1)) : undefined;
+  }
+
+  private tooDeep(el: Element): never {
+    throw new SplinekitError('too-complex', `${this.name}: ${describe(el)} is nested deeper than ${this.maxDepth.toLocaleString('en-US')} levels: refused`);
   }
 
   private isSvg(el: Element): boolean {
@@ -280,7 +289,7 @@ class Builder {
     // checkSize() counted the elements; depth is checked again here because a subtree it counted
     // once near the root can be drawn again, through <use>, much deeper.
     if (this.depth >= this.maxDepth) {
-      throw new SplinekitError('too-complex', `${this.name}: ${describe(el)} is nested deeper than ${this.maxDepth.toLocaleString('en-US')} levels: refused`);
+      this.tooDeep(el);
     }
     this.depth++;
     try {
@@ -333,13 +342,12 @@ class Builder {
   }
 
   private use(el: Element, ctm: Matrix, style: StyleContext): void {
-    const href = el.getAttribute('href') ?? el.getAttributeNS(XLINK_NS, 'href') ?? el.getAttribute('xlink:href');
     const ref = this.referenced(el);
     if (!ref) {
       this.warn('use:missing', (n) => `${n} <use> element${n > 1 ? 's' : ''} reference${n > 1 ? '' : 's'} nothing in this file (external or missing ids): nothing drawn for ${n > 1 ? 'them' : 'it'}`);
       return;
     }
-    if (this.uses.some((u) => u.use === el || u.ref === ref)) this.fail(el, `a <use> cycle through "${href}"`);
+    if (this.uses.some((u) => u.use === el || u.ref === ref)) this.fail(el, `a <use> cycle through "${hrefOf(el)}"`);
     const vp = this.viewports[this.viewports.length - 1];
     let m = multiply(ctm, translation(length(el, 'x', vp, 'x'), length(el, 'y', vp, 'y')));
     this.uses.push({ use: el, ref });

@@ -19,14 +19,10 @@ emscripten::val view_of(std::vector<T>& v) {
   return emscripten::val(emscripten::typed_memory_view(v.size(), v.data()));
 }
 
-// Status codes shared with src/core/errors.ts (STATUS_CODES there; 0 is success).
-enum class Status : int { kOk = 0, kInvalidInput = 1, kInternal = 2 };
-
-// The same codes as the ints that binding methods return to JS (embind passes an int as a
-// number; a registered enum would cross as an object).
-inline constexpr int kOk = int(Status::kOk);
-inline constexpr int kInvalidInput = int(Status::kInvalidInput);
-inline constexpr int kInternal = int(Status::kInternal);
+// Status codes shared with src/core/errors.ts (STATUS_CODES there; 0 is success), as the ints
+// binding methods return to JS (embind passes an int as a number; a registered enum would cross
+// as an object).
+inline constexpr int kOk = 0, kInvalidInput = 1, kInternal = 2;
 
 class SplineSetHandle {
  public:

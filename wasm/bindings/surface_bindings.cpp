@@ -272,7 +272,7 @@ class SurfaceMeshHandle {
       options.angle = adaptive_degrees * kPi / 180;
     } else {
       if (levels > 12) return fail("levels must lie between 0 and 12"), false;
-      options.levels = levels < 0 ? -1 : levels;  // -1: default_levels(scheme)
+      options.levels = levels;  // negative: default_levels(scheme)
     }
     return true;
   }

@@ -16,6 +16,7 @@ import { History } from './history.js';
 import { fetchBytes, importSVG, readFile } from './loader.js';
 import { ModeRegistry, type ModeContext } from './modes.js';
 import { EditorState, type LoadedDocument } from './state.js';
+import { messageOf } from './errors.js';
 
 /** Lets the browser paint (e.g. a "loading" message) before a long synchronous step. */
 function nextPaint(): Promise<void> {
@@ -93,7 +94,7 @@ export class Editor {
       this.show(loaded, options.undoable);
       return true;
     } catch (err) {
-      this.state.setError(err instanceof Error ? err.message : String(err));
+      this.state.setError(messageOf(err));
       return false;
     } finally {
       this.state.setBusy(null);
@@ -110,7 +111,7 @@ export class Editor {
     try {
       bytes = await readFile(file);
     } catch (err) {
-      this.state.setError(err instanceof Error ? err.message : String(err));
+      this.state.setError(messageOf(err));
       return false;
     }
     return this.openBytes(bytes, file.name, { undoable: true });
@@ -121,7 +122,7 @@ export class Editor {
       const bytes = await fetchBytes(`samples/${sample.file}`, sample.file);
       return await this.openBytes(bytes, sample.file, options);
     } catch (err) {
-      this.state.setError(err instanceof Error ? err.message : String(err));
+      this.state.setError(messageOf(err));
       this.toolbar.setSample(this.state.current?.file ?? '');
       return false;
     }
@@ -177,7 +178,7 @@ export class Editor {
     try {
       text = this.modes.active?.exportDocument?.(current) ?? current.doc.toSVG();
     } catch (err) {
-      this.state.setError(`Export failed: ${err instanceof Error ? err.message : String(err)}`);
+      this.state.setError(`Export failed: ${messageOf(err)}`);
       return;
     }
     download(text, current.file.replace(/(\.svg)?$/i, '.svg'));

@@ -1,6 +1,7 @@
 import { DEFAULT_MAX_BYTES, SplinekitError, parseSVG } from '../../src/index.js';
 import { contentHash } from './autosave.js';
 import type { LoadedDocument } from './state.js';
+import { messageOf } from './errors.js';
 
 /**
  * Parses SVG bytes into a document, timing the import. `hash` identifies the content for
@@ -13,7 +14,7 @@ export function importSVG(bytes: Uint8Array, file: string, hash = contentHash(by
     return { doc, file, importMs: performance.now() - t0, bytes: bytes.length, source: bytes, hash };
   } catch (err) {
     if (err instanceof SplinekitError) throw new Error(err.message, { cause: err });
-    throw new Error(`${file}: could not be read as SVG (${err instanceof Error ? err.message : String(err)})`, { cause: err });
+    throw new Error(`${file}: could not be read as SVG (${messageOf(err)})`, { cause: err });
   }
 }
 
@@ -25,7 +26,7 @@ export async function readFile(file: File): Promise<Uint8Array> {
   try {
     return new Uint8Array(await file.arrayBuffer());
   } catch (err) {
-    throw new Error(`${file.name}: the file could not be read (${err instanceof Error ? err.message : String(err)})`, { cause: err });
+    throw new Error(`${file.name}: the file could not be read (${messageOf(err)})`, { cause: err });
   }
 }
 
@@ -35,7 +36,7 @@ export async function fetchBytes(url: string, name: string): Promise<Uint8Array>
   try {
     response = await fetch(url);
   } catch (err) {
-    throw new Error(`${name}: could not be loaded (${err instanceof Error ? err.message : String(err)})`, { cause: err });
+    throw new Error(`${name}: could not be loaded (${messageOf(err)})`, { cause: err });
   }
   if (!response.ok) throw new Error(`${name}: could not be loaded (HTTP ${response.status})`);
   return new Uint8Array(await response.arrayBuffer());

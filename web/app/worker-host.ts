@@ -4,6 +4,7 @@
  * throws answers its request with `{ type: 'error', id, message }`.
  */
 import type { WorkerMessage } from './worker-client.js';
+import { messageOf } from './errors.js';
 
 /** The error reply every protocol has. */
 export interface ErrorReply {
@@ -37,7 +38,7 @@ export function serveRequests<Request extends WorkerMessage, Reply extends Worke
       try {
         await handle(request, post);
       } catch (err) {
-        const reply: ErrorReply = { type: 'error', id: request.id, message: err instanceof Error ? err.message : String(err) };
+        const reply: ErrorReply = { type: 'error', id: request.id, message: messageOf(err) };
         scope.postMessage(reply);
       }
     });

@@ -13,9 +13,10 @@ import {
   type Vector2,
 } from 'three';
 import { SVGLoader } from 'three/examples/jsm/loaders/SVGLoader.js';
-import type { SvgDocument } from '../../src/index.js';
+import type { SvgDocument, SvgShape } from '../../src/index.js';
 import { cssColor } from './color.js';
 import { flattenSpline } from './tessellate.js';
+import { messageOf } from '../app/errors.js';
 
 /** A shape the drawing left out because it could not be tessellated or stroked. */
 export interface SkippedShape {
@@ -94,20 +95,18 @@ export function buildDrawing(doc: SvgDocument, tolerance: number): { mesh: Mesh;
   const skipped: SkippedShape[] = [];
 
   doc.shapes.forEach((shape, i) => {
-    const style = shape.style;
-    if (!style.visible || shape.splineCount === 0) return;
+    if (!shape.style.visible || shape.splineCount === 0) return;
     const before = buffers.mark();
     try {
-      drawShape(i);
+      drawShape(shape, i);
     } catch (err) {
       buffers.rollback(before);
       const element = `<${shape.tag}${shape.id ? ` id="${shape.id}"` : ''}>${shape.line ? ` at line ${shape.line}` : ''}`;
-      skipped.push({ element, reason: err instanceof Error ? err.message : String(err) });
+      skipped.push({ element, reason: messageOf(err) });
     }
   });
 
-  function drawShape(i: number): void {
-    const shape = doc.shapes[i];
+  function drawShape(shape: SvgShape, i: number): void {
     const style = shape.style;
     const lines: Vector2[][] = doc.splinesOf(i).map((s) => flattenSpline(s, tolerance));
 

@@ -6,7 +6,7 @@ import { SplinekitError } from '../../core/errors.js';
 
 /**
  * The mesh file formats the package reads, by file extension: the one list that the format type,
- * the error for an unknown extension, the CLI's help and the editor's file picker derive from.
+ * the error for an unknown extension and the editor's file picker derive from.
  */
 export const MESH_FORMATS = ['obj', 'off', 'ply', 'stl', 'gltf', 'glb'] as const;
 

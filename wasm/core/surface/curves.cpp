@@ -179,13 +179,14 @@ void CurveTracer::rdc_split(const RdcNode& node, RdcNode& left, RdcNode& right) 
 }
 
 // Whether the polygon with these sides turns less than `angle` at both inner points.
-bool CurveTracer::flat(const Sides& sides, double angle) {
+bool CurveTracer::flat(const GeodesicPath& s0, const GeodesicPath& s1, const GeodesicPath& s2, double angle) {
   const TriMesh& mesh = solver_.mesh();
+  const GeodesicPath* sides[3] = {&s0, &s1, &s2};
   for (int i = 0; i < 2; ++i) {
-    const Tangent in = end_tangent(mesh, sides[i]);
-    const Tangent out = start_tangent(mesh, sides[i + 1]);
+    const Tangent in = end_tangent(mesh, *sides[i]);
+    const Tangent out = start_tangent(mesh, *sides[i + 1]);
     if (in.dir.norm() == 0 || out.dir.norm() == 0) continue;
-    if (turning_angle(mesh, sides[i].end, in, out) >= angle) return false;
+    if (turning_angle(mesh, sides[i]->end, in, out) >= angle) return false;
   }
   return true;
 }
@@ -287,10 +288,11 @@ bool CurveTracer::olr_make_leaf(Sides& sides, int level, int m, const TraceOptio
   leaf.inner = sub_path(mesh, sides[1], (leaf.a - u2) / (u5 - u2), (leaf.b - u2) / (u5 - u2));
   if (!leaves.empty()) leaf.joint = path(leaves.back().inner.end, leaf.inner.start);
   if (level < options.max_levels) {
-    const GeodesicPath after =
-        leaf.b == 1 ? sides[2] : path(leaf.inner.end, eval_path(mesh, sides[2], (leaf.b - leaf.a) / (u6 - leaf.a)));
-    if (!flat({leaves.empty() ? sides[0] : leaf.joint, leaf.inner, after}, options.angle)) return false;
-    if (!leaves.empty() && !flat({leaves.back().inner, leaf.joint, leaf.inner}, options.angle)) return false;
+    GeodesicPath ahead;
+    if (leaf.b != 1) ahead = path(leaf.inner.end, eval_path(mesh, sides[2], (leaf.b - leaf.a) / (u6 - leaf.a)));
+    const GeodesicPath& after = leaf.b == 1 ? sides[2] : ahead;
+    if (!flat(leaves.empty() ? sides[0] : leaf.joint, leaf.inner, after, options.angle)) return false;
+    if (!leaves.empty() && !flat(leaves.back().inner, leaf.joint, leaf.inner, options.angle)) return false;
   }
   if (leaf.a == 0) leaf.first = std::move(sides[0]);  // f(0,0,0) = P0, f(0,0,b) = P1
   if (leaf.b == 1) leaf.last = std::move(sides[2]);   // f(a,1,1) = P_{m+2}, f(1,1,1) = P_{m+3}

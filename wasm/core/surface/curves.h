@@ -32,7 +32,7 @@ struct TraceOptions {
   int levels = -1;                          // uniform subdivision levels; negative: default_levels(scheme)
   double angle = 0.0872664626;              // adaptive threshold (radians; 5°)
   int max_levels = 10;                      // adaptive recursion bound (resolves cusps)
-  SearchGraph search = SearchGraph::kDual;  // phase (i) graph of every shortest path (geodesic.h)
+  SearchGraph search = SearchGraph::kDual;  // phase (i) graph of every shortest path (geodesic_options.h)
 
   // The uniform levels in effect: `levels`, or the scheme's default when unset.
   int uniform_levels() const { return levels >= 0 ? levels : default_levels(scheme); }
@@ -69,7 +69,9 @@ class CurveTracer {
   MeshPoint average(const MeshPoint& a, const MeshPoint& b, double w);
 
   using Sides = std::array<GeodesicPath, 3>;  // shortest paths between consecutive control points
-  bool flat(const Sides& sides, double angle);
+  // Whether the polygon of three consecutive sides turns by less than `angle` at both joints.
+  bool flat(const GeodesicPath& s0, const GeodesicPath& s1, const GeodesicPath& s2, double angle);
+  bool flat(const Sides& sides, double angle) { return flat(sides[0], sides[1], sides[2], angle); }
 
   // RDC
   struct RdcNode {

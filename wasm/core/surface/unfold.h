@@ -1,5 +1,5 @@
 // A strip of faces laid flat in the plane, face after face across their shared edges: the common
-// ground of the funnel algorithm (geodesic.cpp) and of parallel transport (tangent.cpp).
+// ground of the funnel algorithm (funnel.cpp) and of parallel transport (tangent.cpp).
 #pragma once
 
 #include "surface/mesh.h"

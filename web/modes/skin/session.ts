@@ -4,6 +4,7 @@ import type { InFlight } from '../../app/in-flight.js';
 import { buildRig, type BuiltRig } from './rig-build.js';
 import { rigKey, setPose, type SkinSpec, type WeightKind } from './spec.js';
 import { CancelledError, type WeightsClient } from './weights-client.js';
+import { messageOf } from '../../app/errors.js';
 
 /** Where the rig stands: none (no handles), building, ready, or the last build failed. */
 export interface RigStatus {
@@ -300,7 +301,7 @@ export class SkinSession {
       if (this._spec.flexible && !live && !T.every((m) => affine.isIdentity(m))) built.rig.relax();
       this._points = built.rig.points().slice();
     } catch (err) {
-      this.setStatus({ phase: 'error', message: `Posing failed: ${err instanceof Error ? err.message : String(err)}` });
+      this.setStatus({ phase: 'error', message: `Posing failed: ${messageOf(err)}` });
     }
     this.events.emit('posed', { live });
   }
@@ -359,7 +360,7 @@ export class SkinSession {
         if (err instanceof CancelledError || !wanted()) return;
         this.buildingKey = null;
         this.failedKey = key;
-        const message = err instanceof Error ? err.message : String(err);
+        const message = messageOf(err);
         this.setStatus({ phase: 'error', stage: null, message: `The rig could not be built: ${message}`, stale: this.built !== null });
       },
     );

@@ -29,6 +29,7 @@ import {
 import { embedRig, loadRig, saveRig } from './storage.js';
 import { skinTestState, type SkinTestState } from './test-state.js';
 import { WeightsClient } from './weights-client.js';
+import { messageOf } from '../../app/errors.js';
 
 export type { SkinTestState };
 
@@ -527,7 +528,7 @@ export class SkinMode implements Mode {
     try {
       exportPosed(s, current.file);
     } catch (err) {
-      ctx.state.setError(err instanceof Error ? err.message : String(err));
+      ctx.state.setError(messageOf(err));
     }
   }
 
@@ -540,7 +541,7 @@ export class SkinMode implements Mode {
       await nextPaint();
       exportAnimated(s, current.file);
     } catch (err) {
-      ctx.state.setError(err instanceof Error ? err.message : String(err));
+      ctx.state.setError(messageOf(err));
     } finally {
       ctx.state.setBusy(null);
     }

@@ -1,4 +1,5 @@
 import type { DomainWeightKind, SkinHandle } from '../../../src/index.js';
+import type { ErrorReply } from '../../app/worker-host.js';
 
 /** Messages between the editor and web/modes/skin/weights.worker.ts (plain arrays only). */
 export interface WeightsRequest {
@@ -16,4 +17,4 @@ export interface WeightsRequest {
 export type WeightsReply =
   | { type: 'progress'; id: number; stage: string; fraction: number }
   | { type: 'done'; id: number; handleCount: number; samples: Float64Array; points: Float64Array; gradients: Float64Array | null; ms: number }
-  | { type: 'error'; id: number; message: string };
+  | ErrorReply;

@@ -57,7 +57,4 @@ export interface SurfaceContext extends SurfaceCommandTarget {
   refreshStatus(): void;
 }
 
-/** The message of an error or of anything thrown. */
-export function messageOf(err: unknown): string {
-  return err instanceof Error ? err.message : String(err);
-}
+export { messageOf } from '../../app/errors.js';

@@ -1,4 +1,5 @@
 import type { MeshPoint, SurfaceSplineJSON } from '../../../src/index.js';
+import { messageOf } from '../../app/errors.js';
 
 /**
  * What the user draws on a mesh, as an immutable value: splines of mesh points, each with an id
@@ -100,7 +101,7 @@ export function parseDrawingFile(text: string, faces: number): DrawingFile {
   try {
     data = JSON.parse(text);
   } catch (err) {
-    fail(`the JSON does not parse (${err instanceof Error ? err.message : String(err)})`);
+    fail(`the JSON does not parse (${messageOf(err)})`);
   }
   const d = data as Partial<DrawingFile> | null;
   if (!d || typeof d !== 'object') fail('expected an object { mesh, splines }');

@@ -175,7 +175,7 @@ export class SurfaceGestures {
       this.traces.dropLive(g.id);
       this.edits.commit(label, s, gen, g.id, g.base, r, sel);
     } catch (err) {
-      if (!(err instanceof SupersededError)) mode.ctx?.state.setError(messageOf(err));
+      if (!(err instanceof SupersededError)) mode.setError(messageOf(err));
       if (this._gesture === g) this.cancel();
     } finally {
       this.committing = false;

@@ -70,7 +70,7 @@ export class MeshSessions {
       }
       if (!restored && !this.wanted && this.meshSamples.length > 0) await this.openSample(this.meshSamples[0].file, false);
     } catch (err) {
-      this.mode.ctx?.state.setError(messageOf(err));
+      this.mode.setError(messageOf(err));
     } finally {
       this.starting = null;
     }
@@ -97,7 +97,7 @@ export class MeshSessions {
       const bytes = await fetchBytes(`samples/meshes/${file}`, file);
       return await this.openBytes(bytes, file, { sample: true, undoable });
     } catch (err) {
-      this.mode.ctx?.state.setError(messageOf(err));
+      this.mode.setError(messageOf(err));
       this.showSampleChoice();
       return false;
     }

@@ -1,5 +1,6 @@
 import type { BVHArrays } from '../../view3d/bvh.js';
 import type { MeshInfo, MeshPoint, SurfaceSplineJSON, TraceOptions } from '../../../src/index.js';
+import type { ErrorReply } from '../../app/worker-host.js';
 
 /**
  * Messages between the editor and web/modes/surface/surface.worker.ts. The worker owns the
@@ -83,4 +84,4 @@ export type SurfaceReply =
   | { type: 'ran'; id: number; json: SurfaceSplineJSON; trace: TracedPolyline | null; polygon: PolygonPaths | null; traceMs: number; ms: number }
   | { type: 'path'; id: number; lifted: Float32Array; length: number }
   | { type: 'mapped'; id: number; splines: SurfaceSplineJSON[]; ms: number }
-  | { type: 'error'; id: number; message: string };
+  | ErrorReply;

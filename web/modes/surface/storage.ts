@@ -2,6 +2,7 @@ import { DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, type SurfaceSplineJSON } fr
 import { documentKey, readJSON, writeJSON } from '../../app/autosave.js';
 import type { SurfaceDrawing } from './drawing.js';
 import type { SurfaceSession } from './session.js';
+import { messageOf } from '../../app/errors.js';
 
 /**
  * Surface mode's local autosave: per mesh (file name + content hash) its drawing in localStorage;
@@ -120,7 +121,7 @@ export async function storeMeshBytes(session: SurfaceSession): Promise<string | 
     db.close();
     return null;
   } catch (err) {
-    return err instanceof Error ? err.message : String(err);
+    return messageOf(err);
   }
 }
 

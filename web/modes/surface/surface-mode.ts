@@ -24,6 +24,7 @@ import { loadPrefs, saveDrawing, savePrefs, saveSurfaceSession, type SurfacePref
 import { SvgPlacement } from './svg-placement.js';
 import { surfaceTestState, type SurfaceTestState } from './test-state.js';
 import { TraceCache } from './trace-cache.js';
+import { messageOf } from '../../app/errors.js';
 
 export type { SurfaceTestState };
 
@@ -183,7 +184,7 @@ export class SurfaceMode implements Mode, SurfaceContext {
     try {
       bytes = await readFile(file);
     } catch (err) {
-      ctx.state.setError(err instanceof Error ? err.message : String(err));
+      ctx.state.setError(messageOf(err));
       return false;
     }
     if (/\.svg$/i.test(file.name) || file.type === 'image/svg+xml') {

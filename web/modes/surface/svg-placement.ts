@@ -74,7 +74,7 @@ export class SvgPlacement {
       this.use(file, new TextDecoder().decode(bytes), false);
       this.start();
     } catch (err) {
-      this.mode.ctx?.state.setError(messageOf(err));
+      this.mode.setError(messageOf(err));
     }
   }
 
@@ -84,7 +84,7 @@ export class SvgPlacement {
       this.use(file.name, new TextDecoder().decode(bytes), true);
       this.start();
     } catch (err) {
-      this.mode.ctx?.state.setError(messageOf(err));
+      this.mode.setError(messageOf(err));
     }
   }
 
@@ -165,7 +165,7 @@ export class SvgPlacement {
         p.jsons = r.splines;
         s.setDrawing(d);
       })
-      .catch((err: unknown) => mode.ctx?.state.setError(messageOf(err)))
+      .catch((err: unknown) => mode.setError(messageOf(err)))
       .finally(() => {
         this.remap.busy = false;
         if (this.remap.again) {

@@ -7,7 +7,6 @@ import type { PolygonPaths, TracedPolyline } from './protocol.js';
 interface TraceEntry {
   key: string;
   trace: TracedPolyline;
-  ms: number;
 }
 
 /** The last trace (one spline), or the last retrace of several together. */
@@ -89,7 +88,7 @@ export class TraceCache {
       .then((r) => {
         if (gen !== mode.generation) return;
         if (r.trace) {
-          this.traces.set(json, { key, trace: r.trace, ms: r.traceMs });
+          this.traces.set(json, { key, trace: r.trace });
           if (batch && this.batch === batch) {
             batch.sum += r.traceMs;
             batch.points += r.trace.xyz.length / 3;
@@ -119,7 +118,7 @@ export class TraceCache {
 
   /** Keeps an edit's reply as the trace and polygon of the spline state it made. */
   store(r: Ran): void {
-    if (r.trace) this.traces.set(r.json, { key: this.key(), trace: r.trace, ms: r.traceMs });
+    if (r.trace) this.traces.set(r.json, { key: this.key(), trace: r.trace });
     if (r.polygon) this.polygons.set(r.json, r.polygon);
   }
 
@@ -130,12 +129,14 @@ export class TraceCache {
     this.mode.refreshStatus();
   }
 
-  /** The polyline shown for a spline: a gesture's live result, else its trace (of older options while the new one comes). */
+  /**
+   * The polyline shown for a spline: a gesture's live result, else its stored trace, whatever
+   * options it was traced with (an older one stays shown while the retrace comes).
+   */
   traceOf(sp: DrawnSpline): TracedPolyline | null {
     const live = this.live.get(sp.id);
     if (live?.trace) return live.trace;
-    const t = this.traces.get(sp.json);
-    return t?.key === this.key() ? t.trace : (t?.trace ?? null);
+    return this.traces.get(sp.json)?.trace ?? null;
   }
 
   polygonOf(sp: DrawnSpline): PolygonPaths | null {
