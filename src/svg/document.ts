@@ -171,6 +171,14 @@ export class SvgDocument {
     });
   }
 
+  /**
+   * Whether `other` draws from the same markup as this document (it is a clone or a posed copy
+   * of it, or this one of it), so only their splines can differ.
+   */
+  sameMarkup(other: SvgDocument): boolean {
+    return this.dom === other.dom;
+  }
+
   /** Counts of shapes, splines, segments, junction kinds and warnings (what `splinekit info` prints). */
   stats(): SvgStats {
     const continuity: Record<ContinuityKind, number> = { none: 0, C0: 0, C1: 0, G1: 0, angle: 0 };

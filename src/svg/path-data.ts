@@ -120,16 +120,15 @@ export function formatNumber(v: number): string {
 }
 
 /**
- * Path data for splines, optionally mapped by `m` (e.g. document → element space):
+ * Path data for splines, optionally mapped by `m` (e.g. document → element space), numbers
+ * written by `format` (12 significant digits by default):
  * "M p0 C p1 p2 p3 …", closed splines end with "Z".
  */
-export function splinesToPathData(splines: readonly RawSpline[], m?: Matrix): string {
+export function splinesToPathData(splines: readonly RawSpline[], m?: Matrix, format: (v: number) => string = formatNumber): string {
   const parts: string[] = [];
   const pt = (pts: Float64Array, i: number) => {
     const x = pts[2 * i], y = pts[2 * i + 1];
-    return m
-      ? `${formatNumber(m.a * x + m.c * y + m.e)} ${formatNumber(m.b * x + m.d * y + m.f)}`
-      : `${formatNumber(x)} ${formatNumber(y)}`;
+    return m ? `${format(m.a * x + m.c * y + m.e)} ${format(m.b * x + m.d * y + m.f)}` : `${format(x)} ${format(y)}`;
   };
   for (const s of splines) {
     const n = s.points.length / 2;

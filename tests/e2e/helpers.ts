@@ -77,19 +77,31 @@ function hexToRGB(hex: string): [number, number, number] {
 }
 
 /**
- * Reads the canvas back (the renderer keeps its drawing buffer) and counts, for each color, the
- * pixels within `tolerance` of it on every channel.
+ * Takes a screenshot of the 2D view (the browser's drawing of the document under the overlay
+ * canvas, composited as the user sees it) and decodes it into a canvas in the page
+ * (window.__viewShot), where the readers below look at it.
  */
+async function shootView(page: Page): Promise<void> {
+  const canvas = page.locator('canvas.view2d-canvas');
+  const png = (await canvas.screenshot({ animations: 'disabled', caret: 'hide' })).toString('base64');
+  await page.evaluate(async (b64) => {
+    const blob = await (await fetch(`data:image/png;base64,${b64}`)).blob();
+    const bitmap = await createImageBitmap(blob);
+    const shot = document.createElement('canvas');
+    shot.width = bitmap.width;
+    shot.height = bitmap.height;
+    shot.getContext('2d', { willReadFrequently: true })!.drawImage(bitmap, 0, 0);
+    (window as unknown as { __viewShot: HTMLCanvasElement }).__viewShot = shot;
+  }, png);
+}
+
+/** Counts, for each color, the pixels of the view within `tolerance` of it on every channel. */
 export async function countColors(page: Page, colors: string[], tolerance = 6): Promise<number[]> {
+  await shootView(page);
   return page.evaluate(
     ({ targets, tolerance }) => {
-      const canvas = document.querySelector<HTMLCanvasElement>('canvas.view2d-canvas')!;
-      const copy = document.createElement('canvas');
-      copy.width = canvas.width;
-      copy.height = canvas.height;
-      const ctx = copy.getContext('2d', { willReadFrequently: true })!;
-      ctx.drawImage(canvas, 0, 0);
-      const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+      const shot = (window as unknown as { __viewShot: HTMLCanvasElement }).__viewShot;
+      const data = shot.getContext('2d')!.getImageData(0, 0, shot.width, shot.height).data;
       const counts = targets.map(() => 0);
       for (let i = 0; i < data.length; i += 4) {
         for (let t = 0; t < targets.length; t++) {
@@ -103,34 +115,32 @@ export async function countColors(page: Page, colors: string[], tolerance = 6): 
   );
 }
 
-/** The color of the canvas pixel at client coordinates (x, y), as '#rrggbb'. */
+/** The color of the view's pixel at client coordinates (x, y), as '#rrggbb'. */
 export async function pixelAt(page: Page, x: number, y: number): Promise<string> {
+  await shootView(page);
   return page.evaluate(
     ({ x, y }) => {
-      const canvas = document.querySelector<HTMLCanvasElement>('canvas.view2d-canvas')!;
-      const r = canvas.getBoundingClientRect();
-      const sx = Math.round(((x - r.left) * canvas.width) / r.width), sy = Math.round(((y - r.top) * canvas.height) / r.height);
-      const copy = document.createElement('canvas');
-      copy.width = copy.height = 1;
-      const ctx = copy.getContext('2d')!;
-      ctx.drawImage(canvas, sx, sy, 1, 1, 0, 0, 1, 1);
-      const [red, g, b] = ctx.getImageData(0, 0, 1, 1).data;
+      const shot = (window as unknown as { __viewShot: HTMLCanvasElement }).__viewShot;
+      const r = document.querySelector<HTMLCanvasElement>('canvas.view2d-canvas')!.getBoundingClientRect();
+      const sx = Math.round(((x - r.left) * shot.width) / r.width), sy = Math.round(((y - r.top) * shot.height) / r.height);
+      const [red, g, b] = shot.getContext('2d')!.getImageData(sx, sy, 1, 1).data;
       return `#${((1 << 24) | (red << 16) | (g << 8) | b).toString(16).slice(1)}`;
     },
     { x, y },
   );
 }
 
-/** A coarse fingerprint of the canvas: mean color of each cell of a 32 × 20 grid. */
+/** A coarse fingerprint of the view: mean color of each cell of a 32 × 20 grid. */
 export async function fingerprint(page: Page): Promise<number[]> {
+  await shootView(page);
   return page.evaluate(() => {
-    const canvas = document.querySelector<HTMLCanvasElement>('canvas.view2d-canvas')!;
+    const shot = (window as unknown as { __viewShot: HTMLCanvasElement }).__viewShot;
     const copy = document.createElement('canvas');
     copy.width = 32;
     copy.height = 20;
     const ctx = copy.getContext('2d')!;
     ctx.imageSmoothingQuality = 'high';
-    ctx.drawImage(canvas, 0, 0, 32, 20);
+    ctx.drawImage(shot, 0, 0, 32, 20);
     return Array.from(ctx.getImageData(0, 0, 32, 20).data);
   });
 }

@@ -5,7 +5,7 @@ import type { AnchorSelection } from '../app/state.js';
 import { CONTINUITY_COLORS, CONTINUITY_DESCRIPTIONS } from '../overlay/colors.js';
 import { h, noFocusOnClick } from '../ui/dom.js';
 import { facts, section } from '../ui/panel.js';
-import type { SkippedShape } from '../view2d/drawing.js';
+import type { SkippedShape } from '../view2d/svg-layer.js';
 import type { ViewPointer } from '../view2d/view2d.js';
 
 /** Kinds in the order the override buttons show them. */
@@ -25,7 +25,7 @@ export class DocumentMode implements Mode {
   readonly description = 'Inspect the drawing: counts, warnings, and the continuity at every junction';
   private ctx: ModeContext | null = null;
   private off: (() => void)[] = [];
-  private info = facts(['File', 'Frame', 'Elements', 'Splines', 'Segments', 'Import', 'Mesh']);
+  private info = facts(['File', 'Frame', 'Elements', 'Splines', 'Segments', 'Import', 'Drawn']);
   private legend = h('ul', { class: 'legend' });
   private junction = h('div', { class: 'junction', 'data-testid': 'junction' });
   private warnings = h('ul', { class: 'warnings', 'data-testid': 'warnings' });
@@ -49,7 +49,7 @@ export class DocumentMode implements Mode {
       state.events.on('selection', () => this.showJunction()),
       state.events.on('overlay', () => this.showJunction()),
       view.events.on('drawing', (s) => {
-        this.info.set('Mesh', `${s.triangles.toLocaleString('en-US')} triangles in ${s.ms.toFixed(0)} ms`);
+        if (s.written > 0) this.info.set('Drawn', `${s.shapes.toLocaleString('en-US')} shapes in ${s.ms.toFixed(0)} ms`, 'Shapes drawn by the browser from their splines, and the time to write them');
         this.skipped = s.skipped;
         this.showWarnings();
       }),

@@ -1,21 +1,7 @@
-import {
-  BufferGeometry,
-  Color,
-  DoubleSide,
-  Float32BufferAttribute,
-  Group,
-  LineBasicMaterial,
-  LineLoop,
-  Mesh,
-  MeshBasicMaterial,
-  OrthographicCamera,
-  PlaneGeometry,
-  Scene,
-  WebGLRenderer,
-} from 'three';
+import { Group, OrthographicCamera, Scene, WebGLRenderer } from 'three';
 import type { SvgDocument } from '../../src/index.js';
 import { Emitter } from '../app/events.js';
-import { buildDrawing, type DrawingStats } from './drawing.js';
+import { SvgLayer, type DrawingStats } from './svg-layer.js';
 import { Viewport } from './viewport.js';
 import { FrameScheduler } from '../app/frames.js';
 
@@ -46,22 +32,17 @@ export interface ViewEvents extends Record<string, unknown> {
   view: Viewport;
   /** A frame was drawn. */
   render: number;
-  /** The drawing was (re)built from the model. */
+  /** The drawing was mounted or updated from the model. */
   drawing: DrawingStats;
 }
 
-const BACKGROUND = 0x1b1d21;
-const PAPER = 0xffffff;
-/** Tessellation tolerance in screen pixels. */
-const TOLERANCE_PX = 0.2;
-/** Finest tessellation tolerance, relative to the drawing's size (its diagonal). */
-const MIN_TOLERANCE = 2e-5;
 /** Pixels the pointer may travel and still make a click. */
 const CLICK_SLOP = 4;
 
 /**
- * The 2D view: a three.js orthographic view of document space with y pointing down (as in SVG),
- * rendering on demand. Pan with a drag on empty space, the middle button or Space + drag; zoom
+ * The 2D view: the document drawn by the browser from its spline model (SvgLayer), under a
+ * transparent three.js orthographic view of document space (y pointing down, as in SVG) that
+ * draws the overlays, rendering on demand. Pan with a drag on empty space, the middle button or Space + drag; zoom
  * with the wheel around the cursor; `fit()` shows the document's frame.
  */
 export class View2D {
@@ -74,12 +55,9 @@ export class View2D {
   readonly overlayLayer = new Group();
   input: ViewInput | null = null;
 
-  private readonly paper: Mesh<PlaneGeometry, MeshBasicMaterial>;
-  private readonly paperEdge: LineLoop;
-  private drawing: Mesh | null = null;
+  /** The document as the browser draws it. */
+  readonly drawing: SvgLayer;
   private doc: SvgDocument | null = null;
-  private builtScale = 0;
-  private rebuildTimer = 0;
   private readonly frames = new FrameScheduler((time) => {
     this.render();
     this.events.emit('render', time);
@@ -88,25 +66,18 @@ export class View2D {
   private drag: { id: number; sx: number; sy: number; lastX: number; lastY: number; pan: boolean; moved: boolean } | null = null;
 
   constructor(readonly container: HTMLElement) {
-    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, powerPreference: 'high-performance' });
+    this.drawing = new SvgLayer(container);
+    this.renderer = new WebGLRenderer({ antialias: false, alpha: true, preserveDrawingBuffer: true, powerPreference: 'high-performance' });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
-    this.renderer.setClearColor(new Color(BACKGROUND), 1);
+    this.renderer.setClearColor(0x000000, 0);
     const canvas = this.renderer.domElement;
     canvas.className = 'view2d-canvas';
     canvas.tabIndex = 0;
     canvas.setAttribute('aria-label', 'Drawing');
     container.appendChild(canvas);
 
-    this.paper = new Mesh(new PlaneGeometry(1, 1), new MeshBasicMaterial({ color: PAPER, side: DoubleSide, depthTest: false, depthWrite: false }));
-    this.paper.renderOrder = -2;
-    this.paper.visible = false;
-    const edge = new BufferGeometry();
-    edge.setAttribute('position', new Float32BufferAttribute([-0.5, -0.5, 0, 0.5, -0.5, 0, 0.5, 0.5, 0, -0.5, 0.5, 0], 3));
-    this.paperEdge = new LineLoop(edge, new LineBasicMaterial({ color: 0x000000, transparent: true, opacity: 0.35, depthTest: false }));
-    this.paperEdge.renderOrder = -1;
-    this.paperEdge.visible = false;
     this.overlayLayer.renderOrder = 10;
-    this.scene.add(this.paper, this.paperEdge, this.overlayLayer);
+    this.scene.add(this.overlayLayer);
 
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
@@ -117,25 +88,23 @@ export class View2D {
     return this.renderer.domElement;
   }
 
+  /** Shows or hides the view (its drawing and its canvas), e.g. while a 3D view takes the stage. */
+  setVisible(visible: boolean): void {
+    this.canvas.style.display = visible ? 'block' : 'none';
+    this.drawing.host.hidden = !visible;
+  }
+
   /** Shows a document (or nothing), fitted to its frame. */
   setDocument(doc: SvgDocument | null): void {
     this.doc = doc;
-    this.paper.visible = this.paperEdge.visible = doc !== null;
-    if (doc) {
-      const [x, y, w, h] = doc.frame;
-      for (const o of [this.paper, this.paperEdge]) {
-        o.position.set(x + w / 2, y + h / 2, 0);
-        o.scale.set(w, h, 1);
-      }
-      this.viewport.fit(doc.frame);
-    }
+    if (doc) this.viewport.fit(doc.frame);
     this.rebuild();
     this.viewChanged();
   }
 
   /**
    * Draws another version of the shown document (e.g. a deformed copy with the same frame),
-   * keeping the view where it is.
+   * keeping the view where it is: only the shapes that changed are rewritten.
    */
   showDrawing(doc: SvgDocument): void {
     this.doc = doc;
@@ -147,31 +116,22 @@ export class View2D {
     return this.doc;
   }
 
-  /** Rebuilds the drawing from the model (after geometry changed). */
+  /** Draws the shown document's current splines (after geometry changed). */
   rebuild(): void {
-    window.clearTimeout(this.rebuildTimer);
-    if (this.drawing) {
-      this.scene.remove(this.drawing);
-      this.drawing.geometry.dispose();
-      (this.drawing.material as MeshBasicMaterial).dispose();
-      this.drawing = null;
-    }
-    if (this.doc) {
-      // Tessellate finely enough for some zooming in; zooming further rebuilds (see viewChanged),
-      // down to a floor relative to the drawing so deep zooms into large files stay affordable.
-      const scale = this.viewport.scale * 2;
-      const { mesh, stats } = buildDrawing(this.doc, Math.max(TOLERANCE_PX / scale, this.doc.size * MIN_TOLERANCE));
-      this.builtScale = scale;
-      this.drawing = mesh;
-      this.scene.add(mesh);
-      this.events.emit('drawing', stats);
-    }
+    this.events.emit('drawing', this.drawing.show(this.doc, this.viewport));
     this.requestRender();
   }
 
   fit(): void {
     if (!this.doc) return;
     this.viewport.fit(this.doc.frame);
+    this.viewChanged();
+  }
+
+  /** Shows the document's frame with its top-left corner at canvas pixel (sx, sy), `width` pixels wide. */
+  placeFrame(sx: number, sy: number, width: number): void {
+    if (!this.doc) return;
+    this.viewport.place(this.doc.frame, sx, sy, width);
     this.viewChanged();
   }
 
@@ -220,13 +180,9 @@ export class View2D {
   }
 
   private viewChanged(): void {
+    this.drawing.setView(this.viewport);
     this.events.emit('view', this.viewport);
     this.requestRender();
-    const finest = this.doc ? TOLERANCE_PX / (this.doc.size * MIN_TOLERANCE) : 0;
-    if (this.doc && this.viewport.scale > this.builtScale * 1.5 && this.builtScale < finest) {
-      window.clearTimeout(this.rebuildTimer);
-      this.rebuildTimer = window.setTimeout(() => this.rebuild(), 250);
-    }
   }
 
   private resize(): void {

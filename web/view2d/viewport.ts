@@ -30,6 +30,14 @@ export class Viewport {
     this.cy = y + h / 2;
   }
 
+  /** Shows the rectangle [x, y, w, h] with its top-left corner at screen (sx, sy), `width` pixels wide. */
+  place(frame: readonly [number, number, number, number], sx: number, sy: number, width: number): void {
+    const [x, y, w] = frame;
+    this.scale = Math.min(this.maxScale, Math.max(this.minScale, width / Math.max(w, 1e-9)));
+    this.cx = x + (this.width / 2 - sx) / this.scale;
+    this.cy = y + (this.height / 2 - sy) / this.scale;
+  }
+
   /** Multiplies the scale by `factor`, keeping the document point under screen (sx, sy) in place. */
   zoomAt(factor: number, sx: number, sy: number): void {
     const [x, y] = this.toDoc(sx, sy);

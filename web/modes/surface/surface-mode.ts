@@ -92,7 +92,7 @@ export class SurfaceMode implements Mode, SurfaceContext {
         this.requestDraw();
       });
     }
-    ctx.view.canvas.style.display = 'none';
+    ctx.view.setVisible(false);
     this._view.setVisible(true);
     this._view.input = this.gestures.input;
     this._view.setFlatShading(this._prefs.flat);
@@ -141,7 +141,7 @@ export class SurfaceMode implements Mode, SurfaceContext {
     if (this._view) this._view.input = null;
     document.body.classList.remove('mode-surface');
     if (ctx) {
-      ctx.view.canvas.style.display = 'block';
+      ctx.view.setVisible(true);
       ctx.view.requestRender();
     }
     this._panel = null;
