@@ -1,82 +1,19 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.js';
-import { countColors, fingerprint, fingerprintDistance, frames, openEditor, sharedData, waitForFile } from './helpers.js';
+import { countColors, fingerprint, fingerprintDistance, frames, waitForFile } from './helpers.js';
+import { BALLERINA_FILE as FILE, drag, handleAt, rigBallerina, rigReady, skin } from './skin-helpers.js';
+
+/** Heat map ends (web/modes/skin/colors.ts): purple at the least error, red at the most; the naive outline. */
+const HEAT_MIN = '#7b2ff7';
+const HEAT_MAX = '#f03e3e';
+const NAIVE = '#15aabf';
 
 /**
  * Skin mode end to end: a character from the shared data gets three handles, is posed by dragging
  * and by the gizmo, undone, reloaded from the autosave, keyframed, and exported as an animated SVG
  * that plays in the browser with no script.
  */
-
-const BALLERINA = sharedData('svg/characters/oc_ballerina.svg');
-const FILE = 'oc_ballerina.svg';
-/** Where the handles go, as fractions of the drawing's bounds: chest, hip, lower leg. */
-/** Heat map ends (web/modes/skin/colors.ts): purple at the least error, red at the most; the naive outline. */
-const HEAT_MIN = '#7b2ff7';
-const HEAT_MAX = '#f03e3e';
-const NAIVE = '#15aabf';
-const HANDLE_SPOTS: [number, number][] = [
-  [0.5, 0.2],
-  [0.5, 0.55],
-  [0.78, 0.88],
-];
-
-type SkinState = ReturnType<NonNullable<Window['splinekitEditor']>['skin']>;
-
-function skin(page: Page): Promise<SkinState> {
-  return page.evaluate(() => window.splinekitEditor!.skin());
-}
-
-/** Waits until the rig matches the handles and the drawing is posed with it. */
-async function rigReady(page: Page): Promise<SkinState> {
-  await page.waitForFunction(() => {
-    const s = window.splinekitEditor!.skin();
-    return s.ready && s.phase === 'ready';
-  });
-  await frames(page);
-  return skin(page);
-}
-
-async function handleAt(page: Page, index: number): Promise<{ x: number; y: number }> {
-  const at = await page.evaluate((i) => window.splinekitEditor!.skinHandleOnScreen(i), index);
-  expect(at, `handle ${index} is drawn`).not.toBeNull();
-  return at!;
-}
-
-/** Presses at `from` and moves in `steps` to `to` (a drag as a user does it), then releases. */
-async function drag(page: Page, from: { x: number; y: number }, to: { x: number; y: number }, steps = 12): Promise<void> {
-  await page.mouse.move(from.x, from.y);
-  await page.mouse.down();
-  for (let i = 1; i <= steps; i++) await page.mouse.move(from.x + ((to.x - from.x) * i) / steps, from.y + ((to.y - from.y) * i) / steps);
-  await page.mouse.up();
-}
-
-/** Opens the ballerina, switches to Skin and places the three handles by clicking on the canvas. */
-async function rigBallerina(page: Page): Promise<SkinState> {
-  await openEditor(page);
-  await page.getByTestId('file-input').setInputFiles(BALLERINA);
-  await waitForFile(page, FILE);
-  await page.getByRole('button', { name: 'Skin', exact: true }).click();
-  await frames(page);
-  let s = await skin(page);
-  expect(s.active).toBe(true);
-  expect(s.tool).toBe('rig');
-  expect(s.handles).toBe(0);
-  await expect(page.getByTestId('skin-hint')).toContainText('Click on the drawing');
-
-  const b = (await page.evaluate(() => window.splinekitEditor!.bounds()))!;
-  for (const [fx, fy] of HANDLE_SPOTS) {
-    const p = await page.evaluate(([x, y]) => window.splinekitEditor!.docToScreen(x, y), [b[0] + fx * (b[2] - b[0]), b[1] + fy * (b[3] - b[1])]);
-    await page.mouse.click(p.x, p.y);
-  }
-  s = await rigReady(page);
-  expect(s.handles).toBe(3);
-  expect(s.selected).toBe(2); // the last one placed
-  expect(s.nan).toBe(false);
-  return s;
-}
 
 test('rigs a character, poses it by dragging and with the gizmo, undoes, and reloads it from the autosave', async ({ page }, testInfo) => {
   const rest = await rigBallerina(page);

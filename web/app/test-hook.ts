@@ -25,6 +25,13 @@ export interface EditorTestHook {
   anchorOnScreen(spline: number, anchor: number): { x: number; y: number } | null;
   /** Where a document point is on screen (client pixels). */
   docToScreen(x: number, y: number): { x: number; y: number };
+  /**
+   * Shows the document's frame at client pixel (x, y), `width` pixels wide (integers keep its
+   * edges on pixel boundaries), and resolves once that has been drawn; returns the frame's size.
+   */
+  placeFrame(x: number, y: number, width: number): Promise<{ width: number; height: number }>;
+  /** The document's frame [x, y, w, h] (its viewBox, else its size), or null. */
+  frame(): [number, number, number, number] | null;
   /** The drawing's bounds at import [xmin, ymin, xmax, ymax], or null. */
   bounds(): [number, number, number, number] | null;
   /** Skin mode: rig, pose (checksum of the posed points), keyframes, layers. */
@@ -94,6 +101,17 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
     docToScreen(x, y) {
       const [sx, sy] = editor.view.toScreen(x, y);
       return client(sx, sy);
+    },
+    async placeFrame(x, y, width) {
+      const r = editor.view.canvas.getBoundingClientRect();
+      editor.view.placeFrame(x - r.left, y - r.top, width);
+      await editor.view.nextFrame();
+      const frame = editor.doc?.frame ?? [0, 0, 1, 1];
+      return { width, height: (width * frame[3]) / frame[2] };
+    },
+    frame() {
+      const f = editor.doc?.frame;
+      return f ? [...f] : null;
     },
     bounds() {
       const b = editor.doc?.bounds;

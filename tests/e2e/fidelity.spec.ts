@@ -1,0 +1,219 @@
+// The editor draws what the browser draws: every SVG of the shared data, the app's samples and
+// the paint fixtures (gradients, dashes, markers, clip paths, masks, opacity, patterns, text,
+// images, filters) is rendered twice in Chromium — natively, as an <img> of the file, and in the
+// editor's view with the document's frame placed at the same size — and the two must agree on all
+// but 1% of the pixels, beyond anti-aliasing. A posed skin drawing is compared the same way with
+// the posed SVG the editor exports. Per-file figures are written to build/fidelity.json (and
+// copied into BENCHMARKS.md by hand).
+import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { basename, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import type { Page } from '@playwright/test';
+import { expect, test } from './fixtures.js';
+import { frames, openEditor, publicFile, sharedData, waitForFile } from './helpers.js';
+import { drag, handleAt, rigBallerina, rigReady } from './skin-helpers.js';
+
+/** The frame's width on screen (its height follows its aspect; tall frames are 400 high). */
+const SIZE = 400;
+/** Where the frame's top-left corner goes, in pixels from the view's corner. */
+const INSET = 24;
+/** A channel difference up to this is anti-aliasing or colour rounding. */
+const CHANNEL_TOLERANCE = 40;
+/** At most this fraction of the pixels may differ beyond anti-aliasing. */
+const MAX_DIFFERENT = 0.01;
+
+const paint = fileURLToPath(new URL('./paint/', import.meta.url));
+const sharedSvg = sharedData('svg');
+const FILES = [
+  ...readdirSync(sharedSvg).flatMap((dir) => readdirSync(join(sharedSvg, dir)).filter((f) => f.endsWith('.svg')).map((f) => join(sharedSvg, dir, f))),
+  ...readdirSync(publicFile('samples')).filter((f) => f.endsWith('.svg')).map((f) => publicFile(`samples/${f}`)),
+  ...readdirSync(paint).filter((f) => f.endsWith('.svg')).map((f) => join(paint, f)),
+].sort();
+
+interface Comparison {
+  /** Fraction of pixels that differ beyond anti-aliasing. */
+  different: number;
+  /** Fraction of pixels the native rendering paints (not white): something must be drawn. */
+  painted: number;
+  width: number;
+  height: number;
+}
+
+/** The size (pixels) the frame [x, y, w, h] is shown at. */
+function shownSize(frame: number[]): { width: number; height: number } {
+  const [, , w, h] = frame;
+  return w >= h ? { width: SIZE, height: (SIZE * h) / w } : { width: (SIZE * w) / h, height: SIZE };
+}
+
+/** Screenshot (PNG, base64) of the region of the page, the region's size rounded down to pixels. */
+async function shoot(page: Page, x: number, y: number, width: number, height: number): Promise<string> {
+  const png = await page.screenshot({ clip: { x, y, width: Math.floor(width), height: Math.floor(height) }, animations: 'disabled', caret: 'hide' });
+  return png.toString('base64');
+}
+
+/** Hides (or shows again) what the view draws over the document: handles, guides, control points. */
+async function hideOverlays(page: Page, hidden: boolean): Promise<void> {
+  await page.evaluate((hidden) => {
+    for (const el of Array.from(document.querySelector('.stage')!.children) as HTMLElement[]) {
+      if (!el.classList.contains('view2d-drawing')) el.style.visibility = hidden ? 'hidden' : '';
+    }
+  }, hidden);
+}
+
+/**
+ * How the editor shows the open document: its frame placed at (INSET, INSET) of the view,
+ * `width` pixels wide, with the overlays hidden (they draw handles and guides, not the drawing).
+ */
+async function editorShot(page: Page, width: number, height: number): Promise<string> {
+  const box = (await page.locator('canvas.view2d-canvas').boundingBox())!;
+  const x = Math.round(box.x) + INSET, y = Math.round(box.y) + INSET;
+  await page.evaluate(([x, y, w]) => window.splinekitEditor!.placeFrame(x, y, w), [x, y, width]);
+  await hideOverlays(page, true);
+  await frames(page);
+  const shot = await shoot(page, x, y, width, height);
+  await hideOverlays(page, false);
+  return shot;
+}
+
+/** How Chromium draws `markup` as an image of `width` × `height` pixels on white. */
+async function nativeShot(page: Page, markup: string, width: number, height: number): Promise<string> {
+  await page.setContent('<body style="margin:0;background:#fff"><img id="native" style="display:block"></body>');
+  await page.evaluate(
+    async ([svg, w, h]) => {
+      const img = document.getElementById('native') as HTMLImageElement;
+      img.style.width = `${w}px`;
+      img.style.height = `${h}px`;
+      img.src = URL.createObjectURL(new Blob([svg], { type: 'image/svg+xml' }));
+      await img.decode();
+    },
+    [markup, width, height] as const,
+  );
+  return shoot(page, 0, 0, width, height);
+}
+
+/**
+ * Compares two screenshots: a pixel differs when every pixel of the other image's 3 × 3
+ * neighbourhood is further than the tolerance from it on some channel (so edges that moved by
+ * less than a pixel, as anti-aliasing does, do not count), in either direction.
+ */
+async function compare(page: Page, a: string, b: string): Promise<Comparison> {
+  return page.evaluate(
+    async ([a, b, tolerance]) => {
+      const decode = async (b64: string) => {
+        const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+        const c = document.createElement('canvas');
+        c.width = bitmap.width;
+        c.height = bitmap.height;
+        const ctx = c.getContext('2d', { willReadFrequently: true })!;
+        ctx.drawImage(bitmap, 0, 0);
+        return { w: c.width, h: c.height, data: ctx.getImageData(0, 0, c.width, c.height).data };
+      };
+      const A = await decode(a), B = await decode(b);
+      if (A.w !== B.w || A.h !== B.h) return { different: 1, painted: 0, width: A.w, height: A.h };
+      const { w, h } = A;
+      const near = (p: Uint8ClampedArray, i: number, q: Uint8ClampedArray, x: number, y: number) => {
+        for (let dy = -1; dy <= 1; dy++) {
+          for (let dx = -1; dx <= 1; dx++) {
+            const xx = x + dx, yy = y + dy;
+            if (xx < 0 || yy < 0 || xx >= w || yy >= h) continue;
+            const j = 4 * (yy * w + xx);
+            if (Math.abs(p[i] - q[j]) <= tolerance && Math.abs(p[i + 1] - q[j + 1]) <= tolerance && Math.abs(p[i + 2] - q[j + 2]) <= tolerance) return true;
+          }
+        }
+        return false;
+      };
+      let different = 0, painted = 0;
+      for (let y = 0; y < h; y++) {
+        for (let x = 0; x < w; x++) {
+          const i = 4 * (y * w + x);
+          if (A.data[i] < 245 || A.data[i + 1] < 245 || A.data[i + 2] < 245) painted++;
+          if (!near(A.data, i, B.data, x, y) || !near(B.data, i, A.data, x, y)) different++;
+        }
+      }
+      return { different: different / (w * h), painted: painted / (w * h), width: w, height: h };
+    },
+    [a, b, CHANNEL_TOLERANCE] as const,
+  );
+}
+
+function record(name: string, figures: Record<string, Comparison>): void {
+  const out = fileURLToPath(new URL('../../build/', import.meta.url));
+  mkdirSync(out, { recursive: true });
+  writeFileSync(join(out, name), `${JSON.stringify(figures, null, 2)}\n`);
+}
+
+test('every SVG draws in the editor as Chromium draws the file', async ({ page, browser }) => {
+  test.setTimeout(300_000);
+  // Its own context (window): a second tab of the editor's would be in the background, and wait for frames.
+  const native = await (await browser.newContext()).newPage();
+  await openEditor(page);
+  const figures: Record<string, Comparison> = {};
+  const failures: string[] = [];
+  for (const path of FILES) {
+    const name = basename(path);
+    const t0 = Date.now();
+    await page.getByTestId('file-input').setInputFiles(path);
+    const state = await waitForFile(page, name);
+    expect(state.error, name).toBeNull();
+    const frame = await page.evaluate(() => window.splinekitEditor!.frame());
+    const { width, height } = shownSize(frame!);
+    const shown = await editorShot(page, width, height);
+    const reference = await nativeShot(native, readFileSync(path, 'utf8'), width, height);
+    const t1 = Date.now();
+    const c = await compare(native, reference, shown);
+    if (process.env.FIDELITY_DEBUG) console.log(name, t1 - t0, Date.now() - t1);
+    figures[path.includes('/shared/') ? path.slice(path.indexOf('svg/')) : path.includes('/paint/') ? `paint/${name}` : `samples/${name}`] = c;
+    if (!(c.painted > 0.002 && c.different <= MAX_DIFFERENT)) failures.push(`${name}: ${(100 * c.different).toFixed(2)}% differ, ${(100 * c.painted).toFixed(1)}% painted`);
+  }
+  record('fidelity.json', figures);
+  expect(FILES.length).toBeGreaterThan(40);
+  expect(failures).toEqual([]);
+});
+
+test('a posed drawing shows as its exported SVG draws', async ({ page, browser }, testInfo) => {
+  await rigBallerina(page);
+  await page.keyboard.press('p');
+  const leg = await handleAt(page, 2);
+  await drag(page, leg, { x: leg.x + 70, y: leg.y - 90 });
+  await rigReady(page);
+  const [posed] = await Promise.all([page.waitForEvent('download'), page.getByTestId('export-posed').click()]);
+  const file = testInfo.outputPath('posed.svg');
+  await posed.saveAs(file);
+
+  const frame = await page.evaluate(() => window.splinekitEditor!.frame());
+  const { width, height } = shownSize(frame!);
+  const shown = await editorShot(page, width, height);
+  const native = await (await browser.newContext()).newPage();
+  const posedShot = await nativeShot(native, readFileSync(file, 'utf8'), width, height);
+  const restShot = await nativeShot(native, readFileSync(sharedData('svg/characters/oc_ballerina.svg'), 'utf8'), width, height);
+  const c = await compare(native, posedShot, shown);
+  if (process.env.FIDELITY_DEBUG) for (const [n, b] of [['shown', shown], ['posed', posedShot]]) writeFileSync(testInfo.outputPath(`${n}.png`), Buffer.from(b, 'base64'));
+  // The view is the pose (not the rest drawing): the rest differs from it where the leg moved.
+  const rest = await compare(native, restShot, shown);
+  record('fidelity-posed.json', { 'characters/oc_ballerina.svg posed': c, 'rest vs posed view': rest });
+  expect(c.painted).toBeGreaterThan(0.01);
+  expect(c.different).toBeLessThanOrEqual(MAX_DIFFERENT);
+  expect(rest.different, 'the rest drawing differs from the posed view').toBeGreaterThan(0.005);
+});
+
+test('a hostile file cannot run script in the editor', async ({ page }, testInfo) => {
+  await openEditor(page);
+  const file = testInfo.outputPath('hostile.svg');
+  writeFileSync(
+    file,
+    `<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 100 100" onload="window.pwned = 1">
+      <script>window.pwned = 2</script>
+      <rect width="50" height="50" fill="#0c8" onmouseover="window.pwned = 3"/>
+      <image href="x" onerror="window.pwned = 4" width="10" height="10"/>
+      <foreignObject width="100" height="100"><iframe xmlns="http://www.w3.org/1999/xhtml" src="javascript:parent.pwned=5"></iframe></foreignObject>
+      <a xlink:href="javascript:window.pwned = 6"><circle cx="70" cy="70" r="20"/></a>
+    </svg>`,
+  );
+  await page.getByTestId('file-input').setInputFiles(file);
+  const state = await waitForFile(page, 'hostile.svg');
+  expect(state.error).toBeNull();
+  await page.waitForTimeout(300);
+  expect(await page.evaluate(() => (window as unknown as { pwned?: number }).pwned ?? 0)).toBe(0);
+  // The shapes are drawn all the same.
+  expect(state.elements).toBe(2);
+});
