@@ -6,13 +6,24 @@ import type { View2D } from '../../view2d/view2d.js';
 import { HEAT, Ramp, SKIN_COLORS, WEIGHT } from './colors.js';
 import { Ribbons } from './ribbons.js';
 
+/** A position per curve sample (samples `perCurve` per curve, curve order), evaluated on demand. */
+export type SampleField = (k: number, out: Float32Array, o: number) => void;
+
+/** The field of an array of x,y pairs. */
+function fieldOf(xy: Float64Array): SampleField {
+  return (k, out, o) => {
+    out[o] = xy[2 * k];
+    out[o + 1] = xy[2 * k + 1];
+  };
+}
+
 /** What the layers show; each is drawn only when on and its data is given. */
 export interface CurveLayerData {
   doc: SvgDocument;
   /** Samples per curve of the arrays below. */
   perCurve: number;
-  /** Target positions at the curve samples (x,y pairs, curve order), dashed. */
-  target: Float64Array | null;
+  /** Target position at curve sample k (written at out[o], out[o + 1]), dashed. */
+  target: SampleField | null;
   /** Per curve error (for the heat map), or null for a plain target. */
   heat: Float64Array | null;
   /** Control points of the naive baseline (all splines), drawn as an outline. */
@@ -21,41 +32,51 @@ export interface CurveLayerData {
   field: { positions: Float64Array; weights: Float64Array } | null;
 }
 
-/** Of the rig's samples per curve, every STRIDE-th is drawn (25 of the paper's 100: smooth on screen). */
+/** Of the rig's samples per curve, at most every STRIDE-th is drawn (25 of the paper's 100: smooth on screen). */
 const STRIDE = 4;
+/** Screen length (pixels) a drawn segment aims at: curves small on screen get fewer segments. */
+const SEGMENT_PX = 4;
 
 /**
- * Polylines through every STRIDE-th sample along each spline (closed splines wrap around), as
- * segments x0 y0 x1 y1 with a color per end.
+ * Polylines through samples along each spline (closed splines wrap around), as segments
+ * x0 y0 x1 y1 with a color per end. Each curve gets as many drawn points as its control polygon
+ * at rest is long on screen in SEGMENT_PX steps (scale: pixels per unit), at least one and at most
+ * every STRIDE-th sample, so a detailed drawing seen whole draws no more than the screen shows.
  */
-function sampleSegments(doc: SvgDocument, perCurve: number, xy: Float64Array, color: (curve: number, sample: number, out: Float32Array, at: number) => void) {
-  const picked = Math.ceil(perCurve / STRIDE), first = Math.floor((perCurve - (picked - 1) * STRIDE - 1) / 2);
-  let total = 0;
+function sampleSegments(doc: SvgDocument, perCurve: number, scale: number, at: SampleField, color: (curve: number, sample: number, out: Float32Array, at: number) => void) {
+  const most = Math.ceil(perCurve / STRIDE);
+  const picks: number[][] = [];
+  let total = 0, curve = 0;
   for (const s of doc.splines) {
-    const m = segmentCount(s) * picked;
-    if (m >= 2) total += s.closed ? m : m - 1;
+    const n = segmentCount(s), p = s.points, count = p.length / 2;
+    const line: number[] = [];
+    for (let k = 0; k < n; k++, curve++) {
+      let length = 0;
+      for (let j = 0; j < 3; j++) {
+        const a = 2 * (3 * k + j), b = 2 * ((3 * k + j + 1) % count);
+        length += Math.hypot(p[b] - p[a], p[b + 1] - p[a + 1]);
+      }
+      const m = Math.min(most, Math.max(1, Math.ceil((length * scale) / SEGMENT_PX)));
+      for (let j = 0; j < m; j++) line.push(curve * perCurve + Math.min(perCurve - 1, Math.floor(((j + 0.5) * perCurve) / m)));
+    }
+    picks.push(line);
+    if (line.length >= 2) total += s.closed ? line.length : line.length - 1;
   }
   const segments = new Float32Array(total * 4), colors = new Float32Array(total * 6);
-  let seg = 0, curve0 = 0;
-  for (const s of doc.splines) {
-    const n = segmentCount(s), m = n * picked;
-    // The j-th drawn point of this spline: curve ⌊j / picked⌋, its sample first + STRIDE·(j mod picked).
-    const sampleOf = (j: number) => (curve0 + Math.floor(j / picked)) * perCurve + first + STRIDE * (j % picked);
-    if (m >= 2) {
-      const count = s.closed ? m : m - 1;
-      for (let j = 0; j < count; j++) {
-        const a = sampleOf(j), b = sampleOf((j + 1) % m);
-        segments[4 * seg] = xy[2 * a];
-        segments[4 * seg + 1] = xy[2 * a + 1];
-        segments[4 * seg + 2] = xy[2 * b];
-        segments[4 * seg + 3] = xy[2 * b + 1];
-        color(Math.floor(a / perCurve), a, colors, 6 * seg);
-        color(Math.floor(b / perCurve), b, colors, 6 * seg + 3);
-        seg++;
-      }
+  let seg = 0;
+  doc.splines.forEach((s, i) => {
+    const line = picks[i], m = line.length;
+    if (m < 2) return;
+    const count = s.closed ? m : m - 1;
+    for (let j = 0; j < count; j++) {
+      const a = line[j], b = line[(j + 1) % m];
+      at(a, segments, 4 * seg);
+      at(b, segments, 4 * seg + 2);
+      color(Math.floor(a / perCurve), a, colors, 6 * seg);
+      color(Math.floor(b / perCurve), b, colors, 6 * seg + 3);
+      seg++;
     }
-    curve0 += n;
-  }
+  });
   return { segments, colors };
 }
 
@@ -93,6 +114,10 @@ export class CurveLayers {
   private readonly field = new Ribbons(5, null, 50);
   private readonly naive = new Ribbons(1.75, null, 51);
   private readonly target = new Ribbons(1.75, { dash: 7, gap: 5 }, 52);
+  /** What is drawn, to draw it again when the zoom changes enough to want other sample counts. */
+  private data: CurveLayerData | null = null;
+  /** The zoom (log2 of the scale, rounded down) the samples were picked for. */
+  private zoomLevel = NaN;
 
   constructor(private readonly view: View2D) {
     for (const r of [this.field, this.naive, this.target]) this.group.add(r.mesh);
@@ -104,13 +129,21 @@ export class CurveLayers {
   /** Keeps line widths in pixels and dashes a constant length on screen. */
   viewChanged(): void {
     for (const r of [this.field, this.naive, this.target]) r.setScale(this.view.viewport.scale);
+    if (this.data && Math.floor(Math.log2(this.view.viewport.scale)) !== this.zoomLevel) this.update(this.data);
   }
 
   update(data: CurveLayerData | null): void {
+    this.data = data;
+    this.zoomLevel = Math.floor(Math.log2(this.view.viewport.scale));
     this.setTarget(data);
     this.setNaive(data);
     this.setField(data);
     this.view.requestRender();
+  }
+
+  /** The scale samples are picked for: the top of the current zoom level's range. */
+  private get pickScale(): number {
+    return 2 ** (this.zoomLevel + 1);
   }
 
   /** Drawn segment counts per layer (for tests). */
@@ -126,7 +159,7 @@ export class CurveLayers {
     let max = (1e-6 * data.doc.size) ** 2;
     if (heat) for (const e of heat) if (e > max) max = e;
     const plain = rgb(SKIN_COLORS.target);
-    const { segments, colors } = sampleSegments(data.doc, data.perCurve, data.target, (curve, _k, out, at) => {
+    const { segments, colors } = sampleSegments(data.doc, data.perCurve, this.pickScale, data.target, (curve, _k, out, at) => {
       // The square root: colors go with the curve's RMS distance, so one bad curve does not
       // leave all the others at the bottom of the scale.
       if (heat) HEAT.srgbInto(Math.sqrt(heat[curve] / max), out, at);
@@ -155,7 +188,7 @@ export class CurveLayers {
   private setField(data: CurveLayerData | null): void {
     const f = data?.field;
     if (!data || !f) return this.field.hide();
-    const { segments, colors } = sampleSegments(data.doc, data.perCurve, f.positions, (_c, k, out, at) => WEIGHT.srgbInto(f.weights[k], out, at));
+    const { segments, colors } = sampleSegments(data.doc, data.perCurve, this.pickScale, fieldOf(f.positions), (_c, k, out, at) => WEIGHT.srgbInto(f.weights[k], out, at));
     this.field.set(segments, colors);
   }
 

@@ -18,6 +18,7 @@ export class Ribbons {
     const material = new ShaderMaterial({
       uniforms: {
         uHalfWidth: { value: 1 },
+        uHalfPx: { value: widthPx / 2 },
         uScale: { value: 1 },
         uDash: { value: dashed?.dash ?? 0 },
         uGap: { value: dashed?.gap ?? 0 },
@@ -26,12 +27,17 @@ export class Ribbons {
         attribute vec3 tint;
         attribute vec2 across;
         attribute float along;
+        attribute float edge;
         uniform float uHalfWidth;
+        uniform float uHalfPx;
         varying vec3 vTint;
         varying float vAlong;
+        varying float vEdge;
         void main() {
           vTint = tint;
           vAlong = along;
+          // Pixels from the middle line: ±(half width + 1) at the quad's sides, for the edge fade.
+          vEdge = edge * (uHalfPx + 1.0);
           vec3 p = position + vec3(across * uHalfWidth, 0.0);
           gl_Position = projectionMatrix * modelViewMatrix * vec4(p, 1.0);
         }`,
@@ -39,11 +45,16 @@ export class Ribbons {
         uniform float uScale;
         uniform float uDash;
         uniform float uGap;
+        uniform float uHalfPx;
         varying vec3 vTint;
         varying float vAlong;
+        varying float vEdge;
         void main() {
           if (uGap > 0.0 && mod(vAlong * uScale, uDash + uGap) > uDash) discard;
-          gl_FragColor = vec4(vTint, 1.0);
+          // Coverage of the pixel by the ribbon: smooth sides without multisampling.
+          float coverage = clamp(uHalfPx + 0.5 - abs(vEdge), 0.0, 1.0);
+          if (coverage <= 0.0) discard;
+          gl_FragColor = vec4(vTint, coverage);
         }`,
       // The view's y points down, which turns the quads' winding around.
       side: DoubleSide,
@@ -65,7 +76,8 @@ export class Ribbons {
   /** Keeps the width in pixels and the dashes a constant length on screen (scale: pixels per unit). */
   setScale(scale: number): void {
     const u = this.mesh.material.uniforms;
-    u.uHalfWidth.value = this.widthPx / 2 / scale;
+    // One pixel wider on each side than drawn, for the fragment shader's edge fade.
+    u.uHalfWidth.value = (this.widthPx / 2 + 1) / scale;
     u.uScale.value = scale;
   }
 
@@ -75,8 +87,14 @@ export class Ribbons {
    */
   set(xy: Float32Array, rgb: Float32Array): void {
     const n = xy.length / 4;
-    const position = new Float32Array(n * 12), tint = new Float32Array(n * 12), across = new Float32Array(n * 8), along = new Float32Array(n * 4);
-    const index = new Uint32Array(n * 6);
+    // The same number of segments (a new pose of the same curves): rewrite the buffers in place.
+    const reuse = this.mesh.visible && n === this.segments;
+    const g = reuse ? this.mesh.geometry : new BufferGeometry();
+    const old = (name: string) => (g.getAttribute(name) as Float32BufferAttribute).array as Float32Array;
+    const position = reuse ? old('position') : new Float32Array(n * 12), tint = reuse ? old('tint') : new Float32Array(n * 12);
+    const across = reuse ? old('across') : new Float32Array(n * 8), along = reuse ? old('along') : new Float32Array(n * 4);
+    const edge = reuse ? null : new Float32Array(n * 4);
+    const index = reuse ? null : new Uint32Array(n * 6);
     let dist = 0, px = NaN, py = NaN;
     for (let s = 0; s < n; s++) {
       const x0 = xy[4 * s], y0 = xy[4 * s + 1], x1 = xy[4 * s + 2], y1 = xy[4 * s + 3];
@@ -94,24 +112,29 @@ export class Ribbons {
         across[2 * k] = nx * side;
         across[2 * k + 1] = ny * side;
         along[k] = end ? dist + len : dist;
+        if (edge) edge[k] = side;
       }
-      const b = 4 * s;
-      index[6 * s] = b;
-      index[6 * s + 1] = b + 1;
-      index[6 * s + 2] = b + 2;
-      index[6 * s + 3] = b + 1;
-      index[6 * s + 4] = b + 3;
-      index[6 * s + 5] = b + 2;
+      if (index) {
+        const b = 4 * s;
+        index[6 * s] = b;
+        index[6 * s + 1] = index[6 * s + 3] = b + 1;
+        index[6 * s + 2] = index[6 * s + 5] = b + 2;
+        index[6 * s + 4] = b + 3;
+      }
       dist += len;
       px = x1;
       py = y1;
     }
-    const g = new BufferGeometry();
+    if (reuse) {
+      for (const name of ['position', 'tint', 'across', 'along']) g.getAttribute(name).needsUpdate = true;
+      return;
+    }
     g.setAttribute('position', new Float32BufferAttribute(position, 3));
     g.setAttribute('tint', new Float32BufferAttribute(tint, 3));
     g.setAttribute('across', new Float32BufferAttribute(across, 2));
     g.setAttribute('along', new Float32BufferAttribute(along, 1));
-    g.setIndex(new Uint32BufferAttribute(index, 1));
+    g.setAttribute('edge', new Float32BufferAttribute(edge!, 1));
+    g.setIndex(new Uint32BufferAttribute(index!, 1));
     this.mesh.geometry.dispose();
     this.mesh.geometry = g;
     this.segments = n;

@@ -66,7 +66,7 @@ export class SkinSession {
   private _status: RigStatus;
   /** Bumped on every pose: derived data (errors, baselines) caches against it. */
   private poseVersion = 0;
-  private cache: { version: number; naive?: Float64Array; errors?: PoseErrors; target?: Float64Array } = { version: -1 };
+  private cache: { version: number; naive?: Float64Array; errors?: PoseErrors } = { version: -1 };
   private weightCache: { built: BuiltRig; rest: Float64Array; weights: Float64Array } | null = null;
   private continuity: string;
 
@@ -210,18 +210,16 @@ export class SkinSession {
   }
 
   /**
-   * The target deformation at the curve samples, Σ_i w_i T_i p (x,y pairs, `SAMPLES` per curve in
-   * curve order), cached per pose.
+   * The target deformation Σ_i w_i T_i p at the curve samples of the current pose, as a function
+   * that writes sample k's x, y at out[o], out[o + 1] (samples are `SAMPLES` per curve in curve
+   * order); evaluated only where it is asked for, as the layers draw a subset. Null without a pose.
    */
-  targetSamples(): Float64Array | null {
+  targetField(): ((k: number, out: Float32Array, o: number) => void) | null {
     const built = this.built;
     if (!built || !this._points) return null;
-    const c = this.currentCache();
-    if (c.target) return c.target;
     const { rest, weights } = this.weightsOf(built);
-    const n = built.ids.length, T = this.transformsFor(built), count = rest.length / 2;
-    const out = new Float64Array(rest.length);
-    for (let k = 0; k < count; k++) {
+    const n = built.ids.length, T = this.transformsFor(built);
+    return (k, out, o) => {
       const x = rest[2 * k], y = rest[2 * k + 1];
       let tx = 0, ty = 0;
       for (let i = 0; i < n; i++) {
@@ -231,10 +229,9 @@ export class SkinSession {
         tx += w * (m[0] * x + m[2] * y + m[4]);
         ty += w * (m[1] * x + m[3] * y + m[5]);
       }
-      out[2 * k] = tx;
-      out[2 * k + 1] = ty;
-    }
-    return (c.target = out);
+      out[o] = tx;
+      out[o + 1] = ty;
+    };
   }
 
   /** Rest positions of the curve samples of the rig in use (x,y pairs). */

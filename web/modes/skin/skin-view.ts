@@ -82,7 +82,7 @@ export class SkinView {
     const data: CurveLayerData = { doc, perCurve: SAMPLES, target: null, heat: null, naive: null, field: null };
     if (posed) {
       if (st.layers.target) {
-        data.target = s.targetSamples();
+        data.target = s.targetField();
         if (st.layers.heat) data.heat = s.errors()?.fit.perCurve ?? null;
       }
       if (st.layers.naive) data.naive = s.naivePoints();
