@@ -234,7 +234,16 @@ export class CatmullRom {
    * curve the range may wrap across the seam (then the points are rotated to start at `last`).
    * Returns the ends' new indices.
    */
-  resampleRange(first: number, last: number, inner: number): { first: number; last: number } {
+  resampleRange(
+    first: number,
+    last: number,
+    inner: number,
+  ): {
+    /** The new index of the window's first end. */
+    first: number;
+    /** The new index of the window's last end. */
+    last: number;
+  } {
     const h = curveHandles.get(this);
     checkStatus(h.resampleRange(first, last, inner), 'resample the window', () => h.error());
     return { first: h.newFirst(), last: h.newLast() };

@@ -134,16 +134,27 @@ export class LocalEdit {
     return h.points();
   }
 
-  /** Ends the drag: the curve takes the last `move`'s points, and the edit's wasm memory is freed. */
-  end(): void {
+  /**
+   * The curve takes the last `move`'s points now (for drawing it mid-drag); the drag goes on from
+   * the positions at begin, so later moves are unaffected. Tangent overrides are kept.
+   */
+  apply(): void {
     const h = editHandles.get(this);
     const c = curveHandles.get(this.curve);
     checkStatus(c.applyEdit(h), 'edit', () => c.error());
+  }
+
+  /** Ends the drag: the curve takes the last `move`'s points, and the edit's wasm memory is freed. */
+  end(): void {
+    this.apply();
     editHandles.release(this);
   }
 
-  /** Ends the drag leaving the curve as it was. */
+  /** Ends the drag with the curve as it was at begin (undoing any `apply`). */
   cancel(): void {
+    const h = editHandles.get(this);
+    h.move(0, 0);
+    this.apply();
     editHandles.release(this);
   }
 
