@@ -4,7 +4,7 @@
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
 //
 // `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
-// skin-weight-steps) and replaces just their text in BENCHMARKS.md (and their entries in
+// skin-weight-steps, edit) and replaces just their text in BENCHMARKS.md (and their entries in
 // build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -12,6 +12,7 @@ import os from 'node:os';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
+import { editBenchmarks, editSection } from './edit.mjs';
 import { editorBenchmarks, editorSection } from './editor.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
@@ -50,6 +51,7 @@ const load = () => os.loadavg()[0].toFixed(1);
  */
 const sections = {
   editor: { key: 'editor', heading: '## Editor (Chromium)', before: '## Memory and size', run: () => editorBenchmarks(root, data, { log: console.log }), markdown: editorSection },
+  edit: { key: 'edit', heading: '## Edit (', before: '## Memory and size', run: () => editBenchmarks(), markdown: editSection },
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
 };
 
@@ -159,11 +161,15 @@ console.log(`skin weight steps: ${JSON.stringify(weightSteps)}`);
 // ---- the editor in Chromium -------------------------------------------------------------------
 const editor = { ...(await editorBenchmarks(root, data, { log: console.log })), load: load() };
 
+// ---- localized editing (Catmull-Rom) ----------------------------------------------------------
+const edit = { ...editBenchmarks(), load: load() };
+console.log(`edit: ${JSON.stringify(edit)}`);
+
 // ---- surface (b/Surf) -------------------------------------------------------------------------
 const surface = await surfaceBenchmarks(root, data, { log: console.log });
 
 // ---- report -----------------------------------------------------------------------------------
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -240,6 +246,7 @@ All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${
 ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })}
 ${surfaceSection(surface)}
 ${editorSection(editor, { date, machine, load: editor.load })}
+${editSection(edit, { date, machine, load: edit.load })}
 ## Memory and size
 
 - malloc'd bytes in the wasm heap after 20 more imports of ${bigRel.replace('svg/', '')}: **${leak}** more than before (0 = nothing leaked).

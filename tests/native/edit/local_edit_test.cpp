@@ -192,3 +192,24 @@ TEST(LocalEdit, RejectsBadRequests) {
   EXPECT_NE(e.begin(c, 3, o).find("alpha"), std::string::npos);
   EXPECT_FALSE(e.active());
 }
+
+TEST(LocalEdit, NormalsOverALongWindowMatchTheSlerpFormulaAtEveryPoint) {
+  // move() carries the rotation along by small steps; every point must still sit where
+  // P⁰ + |D| S(u) slerp(D̂, N̂, u) puts it.
+  const CatmullRom c = make(edit_test::wave(3000), false);
+  LocalEdit e;
+  ASSERT_EQ(e.begin(c, 1200, window(5000, 5000, Falloff::kCosine, true)), "");
+  const Vec2 d(-2.5, 4.0), unit = d.normalized();
+  e.move(d.x(), d.y());
+  const int center = e.window().left;
+  double worst = 0;
+  for (size_t k = 0; k < e.indices().size(); ++k) {
+    const int i = e.indices()[k];
+    Vec2 n = int(k) < center ? e.left_normal() : e.right_normal();
+    if (n.dot(unit) < 0) n = -n;
+    const Vec2 expected = c.control_point(i) + d.norm() * e.weights()[k] * slerp(unit, n, e.distances()[k]);
+    worst = std::max(worst, (vec2_at(e.points().data(), i) - expected).norm());
+  }
+  EXPECT_LT(worst, 1e-12 * d.norm());
+  EXPECT_EQ(e.window().size(), 3000);
+}
