@@ -147,6 +147,26 @@ describe('LocalEdit', () => {
     }
   });
 
+  test('apply() shows a drag in flight without changing where later moves start; cancel() undoes it', () => {
+    const c = CatmullRom.create(Array.from({ length: 12 }, (_, i) => [i, 0] as [number, number]), { parameterization: 'uniform' });
+    try {
+      const before = c.points();
+      c.setTangent(9, [0, 2]);
+      const e = LocalEdit.begin(c, 5, { left: 3, right: 3, falloff: 'linear' });
+      e.move(0, 3);
+      e.apply();
+      expect(c.points()[11]).toBe(3);
+      expect(c.tangentOverridden(9)).toBe(true); // the curve keeps its tangents
+      // The next move starts from the positions at begin, not from the applied ones.
+      expect(e.move(0, 1)[11]).toBe(1);
+      expect(e.move(0, 1)[9]).toBeCloseTo(2 / 3, 14); // linear: 1 - 1/3 of the way to the end
+      e.cancel();
+      expect(Array.from(c.points())).toEqual(Array.from(before));
+    } finally {
+      c.dispose();
+    }
+  });
+
   test('moves allocate nothing, and 1,000 curves and edits made and disposed leave the heap where it was', () => {
     const c = CatmullRom.fromStroke(stroke(2000));
     const e = LocalEdit.begin(c, 1000, { left: 400, right: 400, normals: true });
