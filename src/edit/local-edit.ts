@@ -128,7 +128,7 @@ export class LocalEdit {
    * before the next call into the package. No allocation.
    */
   move(dx: number, dy: number): Float64Array {
-    if (!Number.isFinite(dx) || !Number.isFinite(dy)) throw new SplinekitError('invalid-input', `a displacement needs finite numbers, got (${dx}, ${dy})`);
+    if (!(Math.abs(dx) <= 1e150 && Math.abs(dy) <= 1e150)) throw new SplinekitError('invalid-input', `a displacement needs finite numbers within ±1e150, got (${dx}, ${dy})`);
     const h = editHandles.get(this);
     h.move(dx, dy);
     return h.points();

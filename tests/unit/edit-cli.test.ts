@@ -122,6 +122,8 @@ describe('splinekit edit', () => {
       [[write('nan.json', { closed: false, points: [[0, 0], [1, 'x']] }), '--drag', '0', '1', '1'], 1, 'point 1 must be [x, y]'],
       [[write('shape.json', { curve: [] }), '--drag', '0', '1', '1'], 1, 'expected {"closed":bool,"points"'],
       [[lineFile, '--drag', '11', '1', '1'], 1, 'control point 11 is out of range'],
+      [[write('huge.json', { closed: true, points: [[0, 0], [1e300, 0], [0, 1]] }), '--drag', '0', '1', '1'], 1, 'beyond ±1e150'],
+      [[lineFile, '--drag', '1', '1e200', '0'], 1, 'within ±1e150'],
       [[lineFile], 2, 'needs --drag I DX DY'],
       [[lineFile, '--drag', '1', 'NaN', '0'], 2, '--drag DX must be a finite number'],
       [[lineFile, '--drag', '1', '0', '0', '--falloff', 'box'], 2, '--falloff must be linear, gaussian or cosine'],

@@ -196,5 +196,7 @@ TEST(CatmullRom, RejectsBadInputAndKeepsTheCurve) {
   EXPECT_NE(c.set(two, 2, true).find("at least 3"), std::string::npos);
   const double nan[4] = {0, 0, std::nan(""), 1};
   EXPECT_NE(c.set(nan, 2, false).find("control point 1 has a non-finite x"), std::string::npos);
+  const double huge[4] = {0, 0, 1e300, 1};
+  EXPECT_NE(c.set(huge, 2, false).find("control point 1 has an x coordinate beyond"), std::string::npos);
   EXPECT_EQ(c.count(), 3);
 }

@@ -31,6 +31,10 @@ std::string CatmullRom::set(const double* xy, int count, bool closed, Parameteri
     if (!std::isfinite(xy[i])) {
       return "control point " + std::to_string(i / 2) + " has a non-finite " + (i % 2 ? "y" : "x") + " coordinate";
     }
+    if (std::abs(xy[i]) > kMaxCoordinate) {
+      return "control point " + std::to_string(i / 2) + " has an " + (i % 2 ? "y" : "x") +
+             " coordinate beyond ±1e150 (squared lengths would overflow)";
+    }
   }
   count_ = count;
   closed_ = closed;

@@ -28,6 +28,9 @@ namespace splinekit::edit {
 // The knot spacing. The numbers cross to TS (src/edit/catmull-rom.ts PARAMETERIZATIONS).
 enum class Parameterization : int { kUniform = 0, kCentripetal = 1, kChordal = 2 };
 
+// Coordinates beyond this are refused: squared lengths of larger ones overflow a double.
+inline constexpr double kMaxCoordinate = 1e150;
+
 // The exponent a of dt = |ΔP|^a: 0, 0.5 or 1.
 double knot_exponent(Parameterization p);
 
@@ -35,7 +38,8 @@ class CatmullRom {
  public:
   // ---- Constructors ---------------------------------------------------------------------------
   // Sets the control points (xy: 2·count doubles, x,y pairs) and rebuilds. Returns "" or a message
-  // naming the problem (fewer than 2 points open / 3 closed, a non-finite coordinate); on error the
+  // naming the problem (fewer than 2 points open / 3 closed, a non-finite coordinate or one beyond
+  // ±kMaxCoordinate); on error the
   // previous curve is kept.
   std::string set(const double* xy, int count, bool closed, Parameterization p = Parameterization::kCentripetal);
 
