@@ -6,7 +6,8 @@ import { frames, openEditor } from './helpers.js';
 /**
  * Edit mode end to end (issue 16): sketch a stroke, drag a control point with an active window,
  * widen one side by dragging its end, undo and redo, export, and get the curve back from the
- * autosave; then turn a path of the drawing into a curve and set a tangent.
+ * autosave; then turn a path of the drawing into a curve, set a tangent, draw with a pen (pressure
+ * kept) and close the curve.
  */
 
 type EditState = ReturnType<NonNullable<Window['splinekitEditor']>['edit']>;
@@ -131,7 +132,7 @@ test('sketch a stroke, drag with a window, widen one side, undo, export, reload'
   expect(pointsOf(await edit(page))).toEqual(once);
 });
 
-test('a path of the drawing becomes a curve; a tangent is set and undone; the drop-off shows in the preview', async ({ page }) => {
+test('a path of the drawing becomes a curve; a tangent is set and undone; the drop-off shows in the preview; a pen stroke keeps its pressure; close and undo', async ({ page }) => {
   await openEditMode(page);
   await page.keyboard.press('c');
   const anchor = await page.evaluate(() => window.splinekitEditor!.anchorOnScreen(0, 0));
@@ -167,4 +168,38 @@ test('a path of the drawing becomes a curve; a tangent is set and undone; the dr
   expect(s.curves[0].tangents).toBe(1);
   await page.keyboard.press('Control+z');
   expect((await edit(page)).curves[0].tangents).toBe(0);
+
+  // A pen stroke (pressure rising from 0.2 to 0.8) keeps its pressure per control point.
+  await page.keyboard.press('d');
+  const box = (await page.locator('canvas').first().boundingBox())!;
+  const cdp = await page.context().newCDPSession(page);
+  const pen = (type: string, i: number) =>
+    cdp.send('Input.dispatchMouseEvent', {
+      type,
+      x: box.x + box.width * (0.3 + 0.01 * i),
+      y: box.y + box.height * (0.3 + 0.004 * i * (i % 3)),
+      button: 'left',
+      buttons: type === 'mouseReleased' ? 0 : 1,
+      clickCount: 1,
+      pointerType: 'pen',
+      force: 0.2 + 0.02 * i,
+    });
+  await pen('mousePressed', 0);
+  for (let i = 1; i <= 30; i++) await pen('mouseMoved', i);
+  await pen('mouseReleased', 30);
+  await frames(page);
+  s = await edit(page);
+  expect(s.curves).toHaveLength(2);
+  const pressure = s.curves[1].pressure!;
+  expect(pressure, 'the pen stroke kept its pressure').not.toBeNull();
+  expect(pressure).toHaveLength(s.curves[1].points.length / 2);
+  expect(pressure[0]).toBeCloseTo(0.2, 2);
+  expect(pressure.at(-1)!).toBeCloseTo(0.8, 2);
+  expect(pressure.every((p, i) => i === 0 || p >= pressure[i - 1] - 1e-9)).toBe(true);
+
+  // Close the pen curve, and undo that.
+  await page.getByTestId('edit-close').click();
+  expect((await edit(page)).curves[1].closed).toBe(true);
+  await page.keyboard.press('Control+z');
+  expect((await edit(page)).curves[1].closed).toBe(false);
 });

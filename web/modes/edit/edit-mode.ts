@@ -101,6 +101,7 @@ export class EditMode implements Mode {
       resampleCurve: () => this.resampleCurve(),
       resampleWindow: (f) => this.resampleWindow(f),
       clearTangents: () => this.clearTangents(),
+      toggleClosed: () => this.toggleClosed(),
       deleteCurve: () => this.deleteCurve(),
     });
     ctx.panel.append(...this.panel.sections);
@@ -423,6 +424,19 @@ export class EditMode implements Mode {
       const c = this.curves.curve(at.curve)!;
       for (let i = 0; i < c.count; i++) if (c.tangentOverridden(i)) c.clearTangent(i);
     });
+  }
+
+  private toggleClosed(): void {
+    const at = this.selected;
+    if (!at) return;
+    const before = this.curves.snapshot();
+    const s = before[at.curve];
+    if (!s || (!s.closed && s.points.length < 6)) {
+      this.ctx?.state.setMessage('A closed curve needs at least 3 control points');
+      return;
+    }
+    const after = before.map((c, i) => (i === at.curve ? { ...c, closed: !c.closed } : c));
+    this.ctx?.history.execute(new CurvesCommand(s.closed ? 'Open the curve' : 'Close the curve', this.curves, before, after, (c) => this.applied(c)));
   }
 
   private deleteCurve(): void {

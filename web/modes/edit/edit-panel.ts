@@ -24,6 +24,8 @@ export interface EditPanelActions {
   /** Resample the window's inside at `factor` times its current number of points. */
   resampleWindow(factor: number): void;
   clearTangents(): void;
+  /** Closes an open curve (the last point joins the first) or opens a closed one. */
+  toggleClosed(): void;
   deleteCurve(): void;
 }
 
@@ -116,6 +118,7 @@ export class EditPanel {
           button('Resample curve', 'edit-resample', 'Control points evenly by arc length over the whole curve, same count (R)', () => actions.resampleCurve()),
           button('Finer window', 'edit-finer', 'Twice as many control points inside the active window', () => actions.resampleWindow(2)),
           button('Coarser window', 'edit-coarser', 'Half as many control points inside the active window', () => actions.resampleWindow(0.5)),
+          button('Close / open', 'edit-close', 'Join the last control point to the first, or open a closed curve there', () => actions.toggleClosed()),
           button('Reset tangents', 'edit-clear-tangents', 'Back to the Catmull-Rom tangents on the selected curve', () => actions.clearTangents()),
           button('Delete curve', 'edit-delete', 'Remove the selected curve (Delete)', () => actions.deleteCurve()),
         ),
