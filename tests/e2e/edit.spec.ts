@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.js';
-import { frames, openEditor } from './helpers.js';
+import { docsScreenshot, frames, openEditor } from './helpers.js';
 
 /**
  * Edit mode end to end (issue 16): sketch a stroke, drag a control point with an active window,
@@ -97,6 +97,7 @@ test('sketch a stroke, drag with a window, widen one side, undo, export, reload'
   expect(s.settings.left).toBe(4);
   expect(s.window!.indices.at(-1)).toBe(mid + 8);
   expect(pointsOf(s)).toEqual(once); // resizing the window moves nothing
+  await docsScreenshot(page, 'edit.png'); // the README's picture of Edit mode
 
   const again = await pointAt(page, 0, mid);
   await drag(page, again, { x: again.x + 30, y: again.y });
