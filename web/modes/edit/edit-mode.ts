@@ -208,10 +208,6 @@ export class EditMode implements Mode {
     else this.refresh();
   }
 
-  pointerLeave(): void {
-    // A gesture keeps going (the view captures the pointer); nothing to do for hover.
-  }
-
   click(p: ViewPointer): void {
     if (this.tool === 'convert') this.convertAt(p);
     else if (this.tool === 'edit' || this.tool === 'tangent') this.select(null);
@@ -452,24 +448,25 @@ export class EditMode implements Mode {
   private convertAt(p: ViewPointer): void {
     const doc = this.ctx?.state.doc, view = this.ctx?.view;
     if (!doc || !view) return;
-    let best: { spline: number; d: number } | null = null;
+    let best = -1, bestD = CONVERT_PICK;
     const seg = new Float64Array(8);
-    doc.splines.forEach((s, si) => {
+    for (let si = 0; si < doc.splines.length; si++) {
+      const s = doc.splines[si];
       for (let k = 0; k < segmentCount(s); k++) {
         segmentOf(s, k, seg);
         for (let j = 0; j <= 16; j++) {
           const [x, y] = cubic(seg, j / 16);
           const [sx, sy] = view.toScreen(x, y);
           const d = Math.hypot(sx - p.sx, sy - p.sy);
-          if (d <= CONVERT_PICK && (!best || d < best.d)) best = { spline: si, d };
+          if (d <= bestD) [best, bestD] = [si, d];
         }
       }
-    });
-    if (!best) {
+    }
+    if (best < 0) {
       this.ctx?.state.setMessage('Click on a path of the drawing to turn it into a curve');
       return;
     }
-    const spline = doc.splines[(best as { spline: number }).spline];
+    const spline = doc.splines[best];
     // Four points per Bézier segment (anchors and three between), then even spacing.
     const pts: number[] = [];
     for (let k = 0; k < segmentCount(spline); k++) {
