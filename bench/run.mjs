@@ -3,8 +3,8 @@
 // a table and written to build/bench/results.json and BENCHMARKS.md (with machine and date).
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
 //
-// `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor, editor-drag,
-// skin-weight-steps) and replaces just their text in BENCHMARKS.md (and their entries in
+// `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
+// editor-drag, skin-weight-steps, edit) and replaces just their text in BENCHMARKS.md (and their entries in
 // build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -12,6 +12,7 @@ import os from 'node:os';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
+import { editBenchmarks, editSection } from './edit.mjs';
 import { editorBenchmarks, editorSection } from './editor.mjs';
 import { dragBenchmarks, dragSection } from './editor-drag.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
@@ -52,6 +53,7 @@ const load = () => os.loadavg()[0].toFixed(1);
 const sections = {
   editor: { key: 'editor', heading: '## Editor (Chromium)', before: '## Memory and size', run: () => editorBenchmarks(root, data, { log: console.log }), markdown: editorSection },
   'editor-drag': { key: 'editor_drag', heading: '## Dragging in the editor (Chromium)', before: '## Memory and size', run: () => dragBenchmarks(root, data, { log: console.log }), markdown: dragSection },
+  edit: { key: 'edit', heading: '## Edit (', before: '## Memory and size', run: () => editBenchmarks(), markdown: editSection },
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
 };
 
@@ -162,11 +164,15 @@ console.log(`skin weight steps: ${JSON.stringify(weightSteps)}`);
 const editor = { ...(await editorBenchmarks(root, data, { log: console.log })), load: load() };
 const drag = { ...(await dragBenchmarks(root, data, { log: console.log })), load: load() };
 
+// ---- localized editing (Catmull-Rom) ----------------------------------------------------------
+const edit = { ...editBenchmarks(), load: load() };
+console.log(`edit: ${JSON.stringify(edit)}`);
+
 // ---- surface (b/Surf) -------------------------------------------------------------------------
 const surface = await surfaceBenchmarks(root, data, { log: console.log });
 
 // ---- report -----------------------------------------------------------------------------------
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, editor_drag: drag, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, editor_drag: drag, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -244,6 +250,7 @@ ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })
 ${surfaceSection(surface)}
 ${editorSection(editor, { date, machine, load: editor.load })}
 ${dragSection(drag, { date, machine, load: drag.load })}
+${editSection(edit, { date, machine, load: edit.load })}
 ## Memory and size
 
 - malloc'd bytes in the wasm heap after 20 more imports of ${bigRel.replace('svg/', '')}: **${leak}** more than before (0 = nothing leaked).

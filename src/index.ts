@@ -84,3 +84,14 @@ export {
 export { DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SURFACE_SCHEMES, type SurfaceScheme, type TraceOptions } from './surface/trace-options.js';
 export { mapSplines, type SvgMapOptions } from './surface/svg-map.js';
 export { randomMeshPoints } from './surface/sampling.js';
+export {
+  CatmullRom,
+  DEFAULT_PARAMETERIZATION,
+  PARAMETERIZATIONS,
+  type CatmullRomJSON,
+  type CatmullRomOptions,
+  type Parameterization,
+  type StrokeOptions,
+  type StrokeSample,
+} from './edit/catmull-rom.js';
+export { LocalEdit, DEFAULT_EDIT_OPTIONS, FALLOFFS, type ActiveWindowInfo, type Falloff, type LocalEditOptions } from './edit/local-edit.js';

@@ -7,11 +7,12 @@
 import { readFileSync } from 'node:fs';
 import { init } from '../index.js';
 import { UsageError, type Command } from './common.js';
+import { edit } from './edit.js';
 import { info } from './info.js';
 import { skin } from './skin.js';
 import { geodesic, trace } from './surface.js';
 
-const COMMANDS: Record<string, Command> = { info, skin, geodesic, trace };
+const COMMANDS: Record<string, Command> = { info, skin, geodesic, trace, edit };
 
 function help(): string {
   const lines = ['usage: splinekit <command> [options]', '', 'commands:'];

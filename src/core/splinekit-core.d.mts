@@ -99,6 +99,8 @@ export interface SurfaceMeshHandle extends EmbindObject {
 }
 
 export interface SplinekitCoreModule {
+  CatmullRomHandle: { new (): CatmullRomHandle };
+  LocalEditHandle: { new (): LocalEditHandle };
   SurfaceMeshHandle: { new (): SurfaceMeshHandle };
   SkinRigHandle: { new (): SkinRigHandle };
   SplineSetHandle: { new (): SplineSetHandle };
@@ -142,4 +144,53 @@ export interface SkinWeightsHandle extends EmbindObject {
   weightsAt(): number;
   gradientsAt(): number;
   result(): Float64Array;
+}
+
+/** wasm/bindings/edit_bindings.cpp — CatmullRomHandle (see the flow comment there). Status 0 = ok, else see error(). */
+export interface CatmullRomHandle extends EmbindObject {
+  resizeInput(doubles: number): void;
+  input(): Float64Array;
+  set(count: number, closed: boolean, parameterization: number): number;
+  capture(samples: number, stride: number, minSpacing: number, resample: boolean, parameterization: number): number;
+  pressure(): Float64Array;
+  time(): Float64Array;
+  count(): number;
+  closed(): boolean;
+  parameterization(): number;
+  segmentCount(): number;
+  points(): Float64Array;
+  resample(count: number): number;
+  resampleRange(first: number, last: number, inner: number): number;
+  newFirst(): number;
+  newLast(): number;
+  bezier(): number;
+  bezierPoints(): Float64Array;
+  bezierKinds(): Int32Array;
+  bezierRatios(): Float64Array;
+  out(): Float64Array;
+  point(segment: number, u: number): number;
+  normal(segment: number, u: number): number;
+  segmentLength(segment: number): number;
+  tangent(i: number): number;
+  setTangent(i: number, x: number, y: number): number;
+  clearTangent(i: number): number;
+  tangentOverridden(i: number): boolean;
+  applyEdit(edit: LocalEditHandle): number;
+  error(): string;
+}
+
+/** wasm/bindings/edit_bindings.cpp — LocalEditHandle: one localized drag. Status 0 = ok, else see error(). */
+export interface LocalEditHandle extends EmbindObject {
+  /** falloff: 0 linear, 1 gaussian, 2 cosine. */
+  begin(curve: CatmullRomHandle, center: number, left: number, right: number, falloff: number, alpha: number, sigma: number, normals: boolean): number;
+  move(dx: number, dy: number): void;
+  end(): void;
+  active(): boolean;
+  points(): Float64Array;
+  indices(): Int32Array;
+  weights(): Float64Array;
+  distances(): Float64Array;
+  left(): number;
+  right(): number;
+  error(): string;
 }

@@ -1,5 +1,6 @@
 import type { SvgDocument } from '../../src/index.js';
 import { DocumentMode } from '../modes/document-mode.js';
+import { EditMode } from '../modes/edit/edit-mode.js';
 import { SkinMode } from '../modes/skin/skin-mode.js';
 import { isMeshFile } from '../modes/surface/mesh-files.js';
 import { SurfaceMode } from '../modes/surface/surface-mode.js';
@@ -38,6 +39,7 @@ export class Editor {
   readonly panel = new SidePanel();
   readonly skin = new SkinMode();
   readonly surface = new SurfaceMode();
+  readonly edit = new EditMode();
   samples: Sample[] = [];
   /** What the drop hint says (Surface mode opens meshes). */
   private readonly dropText = h('div', {}, 'Drop an SVG file to open it');
@@ -69,6 +71,7 @@ export class Editor {
     this.modes.register(new DocumentMode());
     this.modes.register(this.skin);
     this.modes.register(this.surface);
+    this.modes.register(this.edit);
     this.status.el.prepend(this.surface.statusEl);
 
     this.wire();

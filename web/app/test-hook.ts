@@ -1,4 +1,5 @@
 import { anchorJunction, type ContinuityKind, type MeshPoint } from '../../src/index.js';
+import type { EditTestState } from '../modes/edit/edit-mode.js';
 import type { SkinTestState } from '../modes/skin/skin-mode.js';
 import type { SurfaceTestState } from '../modes/surface/surface-mode.js';
 import type { Editor } from './editor.js';
@@ -42,6 +43,12 @@ export interface EditorTestHook {
   skinGizmoOnScreen(): { center: { x: number; y: number }; knob: { x: number; y: number }; ring: number } | null;
   /** Surface mode. */
   surface: SurfaceTestHook;
+  /** Edit mode: tool, settings, curves, selection, the active window's preview. */
+  edit(): EditTestState;
+  /** Where control point `point` of Edit curve `curve` is drawn (client pixels), or null. */
+  editPointOnScreen(curve: number, point: number): { x: number; y: number } | null;
+  /** Where the active window's left or right end is drawn (client pixels), or null. */
+  editWindowEndOnScreen(side: 'left' | 'right'): { x: number; y: number } | null;
 }
 
 /** Surface mode's window for tests (window.splinekitEditor.surface). */
@@ -127,6 +134,15 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
     skinGizmoOnScreen() {
       const g = editor.skin.gizmoOnCanvas();
       return g ? { center: client(...g.center), knob: client(...g.knob), ring: g.ring } : null;
+    },
+    edit: () => editor.edit.testState(),
+    editPointOnScreen(curve, point) {
+      const at = editor.edit.pointOnCanvas(curve, point);
+      return at ? client(at[0], at[1]) : null;
+    },
+    editWindowEndOnScreen(side) {
+      const at = editor.edit.windowEndOnCanvas(side);
+      return at ? client(at[0], at[1]) : null;
     },
     surface: Object.freeze({
       ready: () => editor.surface.ready(),
