@@ -67,6 +67,7 @@ export class SkinSession {
   /** Bumped on every pose: derived data (errors, baselines) caches against it. */
   private poseVersion = 0;
   private cache: { version: number; naive?: Float64Array; errors?: PoseErrors } = { version: -1 };
+  private lastErrors: PoseErrors | null = null;
   private weightCache: { built: BuiltRig; rest: Float64Array; weights: Float64Array } | null = null;
   private continuity: string;
 
@@ -206,7 +207,16 @@ export class SkinSession {
       c.naive ??= rig.baseline('naive').slice(); // error('naive') reuses the baseline buffer
       c.errors = { fit: rig.error('fit'), naive: rig.error('naive') };
     }
-    return c.errors;
+    return (this.lastErrors = c.errors);
+  }
+
+  /**
+   * The errors of the current pose when they are known, else those of the last pose they were
+   * computed for (a drag shows those until it ends: measuring a pose costs more than posing).
+   */
+  errorsSoFar(): PoseErrors | null {
+    if (!this.built?.rig || !this._points) return null;
+    return this.currentCache().errors ?? this.lastErrors;
   }
 
   /**

@@ -79,11 +79,13 @@ export class SkinView {
       if (ctx.state.overlay) ctx.overlay.setDocument(shown);
     }
 
+    // While a handle is dragged or the timeline plays, the errors shown are the last measured.
+    const errors = !posed ? null : st.gesture || st.playing ? s.errorsSoFar() : s.errors();
     const data: CurveLayerData = { doc, perCurve: SAMPLES, target: null, heat: null, naive: null, field: null };
     if (posed) {
       if (st.layers.target) {
         data.target = s.targetField();
-        if (st.layers.heat) data.heat = s.errors()?.fit.perCurve ?? null;
+        if (st.layers.heat) data.heat = errors?.fit.perCurve ?? null;
       }
       if (st.layers.naive) data.naive = s.naivePoints();
     }
@@ -103,7 +105,7 @@ export class SkinView {
     const si = s.indexOf(s.selected);
     const gizmo = st.tool === 'pose' && si >= 0 ? { id: spec.handles[si].id, x: marks[si].x, y: marks[si].y, angle: affine.angleOf(spec.pose[si]), readout: st.readout } : null;
     this.handles.set(marks, s.selected, gizmo);
-    this.panel.setErrors(posed ? s.errors() : null, doc.size);
+    this.panel.setErrors(errors, doc.size);
     this.refreshTimeline(st);
   }
 
