@@ -1,7 +1,8 @@
 import { XMLSerializer } from '@xmldom/xmldom';
 import { SplinekitError } from '../core/errors.js';
 import { cloneSpline, segmentCount, type ContinuityKind, type Spline } from '../spline/spline.js';
-import { invert, isIdentity, type Matrix } from './matrix.js';
+import { invert, isIdentity, transformPoints, type Matrix } from './matrix.js';
+import { findById, fitAffine, paintFollower, splineBounds } from './paint-follow.js';
 import { formatNumber, splinesToPathData } from './path-data.js';
 import type { ResolvedStyle } from './style.js';
 
@@ -242,6 +243,46 @@ export class SvgDocument {
     return this.splines.slice(s.firstSpline, s.firstSpline + s.splineCount);
   }
 
+  /**
+   * The affine map of shape i's user space that best carries its splines as imported to its
+   * splines now (least squares over the control points), for paint that should follow the shape;
+   * null when the shape has not moved or its points no longer pair with the imported ones.
+   */
+  paintTransform(i: number): Matrix | null {
+    const shape = this.shapes[i], original = this.sources[i].original;
+    const toLocal = invert(shape.transform);
+    if (!toLocal || original.length !== shape.splineCount || !this.changed(i)) return null;
+    const from: number[] = [], to: number[] = [];
+    for (let k = 0; k < shape.splineCount; k++) {
+      const a = original[k], b = this.splines[shape.firstSpline + k].points;
+      if (a.length !== b.length) return null;
+      for (let j = 0; j < a.length; j += 2) {
+        from.push(toLocal.a * a[j] + toLocal.c * a[j + 1] + toLocal.e, toLocal.b * a[j] + toLocal.d * a[j + 1] + toLocal.f);
+        to.push(toLocal.a * b[j] + toLocal.c * b[j + 1] + toLocal.e, toLocal.b * b[j] + toLocal.d * b[j + 1] + toLocal.f);
+      }
+    }
+    const m = fitAffine(from, to);
+    return Object.values(m).every(Number.isFinite) ? m : null;
+  }
+
+  /**
+   * Makes the gradients and patterns (in user space units) that paint shape i, whose element is
+   * `el` under `root`, follow the shape's deformation (see svg/paint-follow.ts).
+   */
+  private followPaints(i: number, root: Element, el: Element): void {
+    const m = this.paintTransform(i);
+    if (!m) return;
+    for (const follow of paintFollowers(this, i, root, el)) follow(m);
+  }
+
+  /** Shape i's bounds [x, y, w, h] as imported, in its element's user space, or null. */
+  importedBounds(i: number): [number, number, number, number] | null {
+    const toLocal = invert(this.shapes[i].transform);
+    if (!toLocal) return null;
+    const splines = this.sources[i].original.map((p, k) => ({ closed: this.splines[this.shapes[i].firstSpline + k]?.closed ?? false, points: transformPoints(toLocal, p.slice()) }));
+    return splineBounds(splines);
+  }
+
   /** Whether shape i moved: by more than 1e-10 of the drawing's size (float noise is not a change). */
   private changed(i: number): boolean {
     const shape = this.shapes[i], original = this.sources[i].original;
@@ -351,6 +392,7 @@ export class SvgDocument {
       if (el.localName === 'path') {
         el.setAttribute('d', d);
         el.removeAttribute('pathLength');
+        this.followPaints(i, out.documentElement!, el);
         elements.set(i, el);
         return;
       }
@@ -361,25 +403,29 @@ export class SvgDocument {
       path.setAttribute('d', d);
       while (el.firstChild) path.appendChild(el.firstChild);
       el.parentNode!.replaceChild(path, el);
+      this.followPaints(i, out.documentElement!, path);
       elements.set(i, path);
     });
     return { out, elements };
   }
 }
 
+/**
+ * The functions that make the gradients and user-space patterns painting shape `i` of `doc`
+ * (element `el` under `root`) follow a map of its user space: one per followed paint, fill first.
+ */
+export function paintFollowers(doc: SvgDocument, i: number, root: Element, el: Element): ((m: Matrix) => void)[] {
+  const out: ((m: Matrix) => void)[] = [];
+  for (const which of ['fill', 'stroke'] as const) {
+    const follow = paintFollower(root, el, String(i), which, doc.shapes[i].style[which], () => doc.importedBounds(i));
+    if (follow) out.push(follow);
+  }
+  return out;
+}
+
 function serialize(out: Document): string {
   const xml = new XMLSerializer().serializeToString(out as unknown as Parameters<XMLSerializer['serializeToString']>[0]);
   return xml.startsWith('<?xml') ? xml : `<?xml version="1.0" encoding="UTF-8"?>\n${xml}`;
-}
-
-function findById(root: Element, id: string): Element | null {
-  const stack: Element[] = [root];
-  while (stack.length) {
-    const el = stack.pop()!;
-    if (el.getAttribute('id') === id) return el;
-    for (let c = el.lastChild; c; c = c.previousSibling) if (c.nodeType === 1) stack.push(c as Element);
-  }
-  return null;
 }
 
 /** Maps every element of `a` to the element at the same place in `b` (a structural copy of a). */

@@ -11,7 +11,7 @@ import { fileURLToPath } from 'node:url';
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.js';
 import { frames, openEditor, publicFile, sharedData, waitForFile } from './helpers.js';
-import { drag, handleAt, rigBallerina, rigReady } from './skin-helpers.js';
+import { drag, handleAt, rigFile, rigReady } from './skin-helpers.js';
 
 /** The frame's width on screen (its height follows its aspect; tall frames are 400 high). */
 const SIZE = 400;
@@ -163,6 +163,7 @@ test('every SVG draws in the editor as Chromium draws the file', async ({ page, 
     const c = await compare(native, reference, shown);
     if (process.env.FIDELITY_DEBUG) console.log(name, t1 - t0, Date.now() - t1);
     figures[path.includes('/shared/') ? path.slice(path.indexOf('svg/')) : path.includes('/paint/') ? `paint/${name}` : `samples/${name}`] = c;
+    if (process.env.FIDELITY_DEBUG && c.different > MAX_DIFFERENT) for (const [n, b] of [['shown', shown], ['native', reference]]) writeFileSync(`build/${name}-${n}.png`, Buffer.from(b, 'base64'));
     if (!(c.painted > 0.002 && c.different <= MAX_DIFFERENT)) failures.push(`${name}: ${(100 * c.different).toFixed(2)}% differ, ${(100 * c.painted).toFixed(1)}% painted`);
   }
   record('fidelity.json', figures);
@@ -170,31 +171,37 @@ test('every SVG draws in the editor as Chromium draws the file', async ({ page, 
   expect(failures).toEqual([]);
 });
 
-test('a posed drawing shows as its exported SVG draws', async ({ page, browser }, testInfo) => {
-  await rigBallerina(page);
-  await page.keyboard.press('p');
-  const leg = await handleAt(page, 2);
-  await drag(page, leg, { x: leg.x + 70, y: leg.y - 90 });
-  await rigReady(page);
-  const [posed] = await Promise.all([page.waitForEvent('download'), page.getByTestId('export-posed').click()]);
-  const file = testInfo.outputPath('posed.svg');
-  await posed.saveAs(file);
+for (const [label, path] of [
+  ['characters/oc_ballerina.svg', sharedData('svg/characters/oc_ballerina.svg')],
+  ['paint/gradients.svg', join(paint, 'gradients.svg')],
+]) {
+  test(`a posed drawing shows as its exported SVG draws: ${label}`, async ({ page, browser }, testInfo) => {
+    await rigFile(page, path);
+    await page.keyboard.press('p');
+    const leg = await handleAt(page, 2);
+    await drag(page, leg, { x: leg.x + 70, y: leg.y - 90 });
+    await rigReady(page);
+    const [posed] = await Promise.all([page.waitForEvent('download'), page.getByTestId('export-posed').click()]);
+    const file = testInfo.outputPath('posed.svg');
+    await posed.saveAs(file);
 
-  const frame = await page.evaluate(() => window.splinekitEditor!.frame());
-  const { width, height } = shownSize(frame!);
-  const shown = await editorShot(page, width, height);
-  const native = await (await browser.newContext()).newPage();
-  const posedShot = await nativeShot(native, readFileSync(file, 'utf8'), width, height);
-  const restShot = await nativeShot(native, readFileSync(sharedData('svg/characters/oc_ballerina.svg'), 'utf8'), width, height);
-  const c = await compare(native, posedShot, shown);
-  if (process.env.FIDELITY_DEBUG) for (const [n, b] of [['shown', shown], ['posed', posedShot]]) writeFileSync(testInfo.outputPath(`${n}.png`), Buffer.from(b, 'base64'));
-  // The view is the pose (not the rest drawing): the rest differs from it where the leg moved.
-  const rest = await compare(native, restShot, shown);
-  record('fidelity-posed.json', { 'characters/oc_ballerina.svg posed': c, 'rest vs posed view': rest });
-  expect(c.painted).toBeGreaterThan(0.01);
-  expect(c.different).toBeLessThanOrEqual(MAX_DIFFERENT);
-  expect(rest.different, 'the rest drawing differs from the posed view').toBeGreaterThan(0.005);
-});
+    const frame = await page.evaluate(() => window.splinekitEditor!.frame());
+    const { width, height } = shownSize(frame!);
+    const shown = await editorShot(page, width, height);
+    const native = await (await browser.newContext()).newPage();
+    const posedShot = await nativeShot(native, readFileSync(file, 'utf8'), width, height);
+    const restShot = await nativeShot(native, readFileSync(path, 'utf8'), width, height);
+    const c = await compare(native, posedShot, shown);
+    if (process.env.FIDELITY_DEBUG) for (const [n, b] of [['shown', shown], ['posed', posedShot]]) writeFileSync(testInfo.outputPath(`${n}.png`), Buffer.from(b, 'base64'));
+    // The view is the pose (not the rest drawing): the rest differs from it where the drawing moved.
+    const rest = await compare(native, restShot, shown);
+    record(`fidelity-posed-${basename(path, '.svg')}.json`, { [`${label} posed`]: c, 'rest vs posed view': rest });
+    expect(c.painted).toBeGreaterThan(0.01);
+    expect(c.different).toBeLessThanOrEqual(MAX_DIFFERENT);
+    expect(rest.different, 'the rest drawing differs from the posed view').toBeGreaterThan(0.005);
+    if (label.startsWith('paint/')) expect(readFileSync(file, 'utf8'), 'the posed export carries its own copies of the paint').toContain('-splinekit-');
+  });
+}
 
 test('a hostile file cannot run script in the editor', async ({ page }, testInfo) => {
   await openEditor(page);

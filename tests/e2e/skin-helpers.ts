@@ -43,10 +43,15 @@ export async function drag(page: Page, from: { x: number; y: number }, to: { x: 
 }
 
 /** Opens the ballerina, switches to Skin and places the three handles by clicking on the canvas. */
-export async function rigBallerina(page: Page): Promise<SkinState> {
+export function rigBallerina(page: Page): Promise<SkinState> {
+  return rigFile(page, BALLERINA);
+}
+
+/** Opens the SVG at `path`, switches to Skin and places the three handles by clicking on the canvas. */
+export async function rigFile(page: Page, path: string): Promise<SkinState> {
   await openEditor(page);
-  await page.getByTestId('file-input').setInputFiles(BALLERINA);
-  await waitForFile(page, BALLERINA_FILE);
+  await page.getByTestId('file-input').setInputFiles(path);
+  await waitForFile(page, path.split('/').pop()!);
   await page.getByRole('button', { name: 'Skin', exact: true }).click();
   await frames(page);
   let s = await skin(page);

@@ -1,6 +1,7 @@
 import DOMPurify from 'dompurify';
 import { SHAPE_ATTRIBUTE, type SvgDocument } from '../../src/index.js';
-import { invert, isIdentity, type Matrix } from '../../src/svg/matrix.js';
+import { paintFollowers } from '../../src/svg/document.js';
+import { IDENTITY, invert, isIdentity, type Matrix } from '../../src/svg/matrix.js';
 import { splinesToPathData } from '../../src/svg/path-data.js';
 import type { Viewport } from './viewport.js';
 
@@ -30,6 +31,8 @@ interface Target {
   toLocal: Matrix | undefined;
   /** The points the path was last written from, one array per spline, to skip unchanged shapes. */
   drawn: Float64Array[];
+  /** Set the map its user-space gradients and patterns follow (see src/svg/paint-follow.ts). */
+  follow: ((m: Matrix) => void)[];
 }
 
 /**
@@ -153,7 +156,7 @@ export class SvgLayer {
     doc.shapes.forEach((shape, i) => {
       const el = byIndex.get(i);
       const inv = invert(shape.transform);
-      if (el && inv) this.targets.push({ el, shape: i, toLocal: isIdentity(inv) ? undefined : inv, drawn: [] });
+      if (el && inv) this.targets.push({ el, shape: i, toLocal: isIdentity(inv) ? undefined : inv, drawn: [], follow: paintFollowers(doc, i, svg, el) });
     });
   }
 
@@ -172,6 +175,10 @@ export class SvgLayer {
         continue;
       }
       t.el.setAttribute('d', splinesToPathData(splines, t.toLocal, this.format));
+      if (t.follow.length > 0) {
+        const m = doc.paintTransform(t.shape) ?? IDENTITY;
+        for (const follow of t.follow) follow(m);
+      }
       written++;
     }
     return { written, skipped };
