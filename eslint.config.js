@@ -67,7 +67,7 @@ export default defineConfig(
     languageOptions: { globals: globals.node },
   },
   // The editor benchmark drives Chromium: its page.evaluate callbacks run in the page.
-  { files: ['bench/editor.mjs', 'bench/editor-drag.mjs'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },
+  { files: ['bench/editor.mjs', 'bench/editor-drag.mjs', 'bench/fidelity.mjs'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },
   // The embedding examples that run in a browser page.
   { files: ['examples/html/**', 'examples/vite/**'], languageOptions: { globals: globals.browser } },
 );

@@ -4,7 +4,7 @@
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
 //
 // `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
-// editor-drag, skin-weight-steps, edit) and replaces just their text in BENCHMARKS.md (and their entries in
+// editor-drag, fidelity, skin-weight-steps, edit) and replaces just their text in BENCHMARKS.md (and their entries in
 // build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -15,6 +15,7 @@ import { SplineSet, init, memory, parseSVG } from '../dist/index.js';
 import { editBenchmarks, editSection } from './edit.mjs';
 import { editorBenchmarks, editorSection } from './editor.mjs';
 import { dragBenchmarks, dragSection } from './editor-drag.mjs';
+import { fidelityFigures, fidelitySection } from './fidelity.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
 
@@ -52,6 +53,7 @@ const load = () => os.loadavg()[0].toFixed(1);
  */
 const sections = {
   editor: { key: 'editor', heading: '## Editor (Chromium)', before: '## Memory and size', run: () => editorBenchmarks(root, data, { log: console.log }), markdown: editorSection },
+  fidelity: { key: 'fidelity', heading: '## Editor fidelity (Chromium)', before: '## Memory and size', run: () => fidelityFigures(root), markdown: fidelitySection },
   'editor-drag': { key: 'editor_drag', heading: '## Dragging in the editor (Chromium)', before: '## Memory and size', run: () => dragBenchmarks(root, data, { log: console.log }), markdown: dragSection },
   edit: { key: 'edit', heading: '## Edit (', before: '## Memory and size', run: () => editBenchmarks(), markdown: editSection },
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
@@ -163,6 +165,7 @@ console.log(`skin weight steps: ${JSON.stringify(weightSteps)}`);
 // ---- the editor in Chromium -------------------------------------------------------------------
 const editor = { ...(await editorBenchmarks(root, data, { log: console.log })), load: load() };
 const drag = { ...(await dragBenchmarks(root, data, { log: console.log })), load: load() };
+const fidelity = fidelityFigures(root);
 
 // ---- localized editing (Catmull-Rom) ----------------------------------------------------------
 const edit = { ...editBenchmarks(), load: load() };
@@ -172,7 +175,7 @@ console.log(`edit: ${JSON.stringify(edit)}`);
 const surface = await surfaceBenchmarks(root, data, { log: console.log });
 
 // ---- report -----------------------------------------------------------------------------------
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, editor_drag: drag, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, editor_drag: drag, fidelity, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -250,6 +253,7 @@ ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })
 ${surfaceSection(surface)}
 ${editorSection(editor, { date, machine, load: editor.load })}
 ${dragSection(drag, { date, machine, load: drag.load })}
+${fidelitySection(fidelity, { date, machine })}
 ${editSection(edit, { date, machine, load: edit.load })}
 ## Memory and size
 

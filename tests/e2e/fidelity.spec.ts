@@ -4,7 +4,8 @@
 // editor's view with the document's frame placed at the same size — and the two must agree on all
 // but 1% of the pixels, beyond anti-aliasing. A posed skin drawing is compared the same way with
 // the posed SVG the editor exports. Per-file figures are written to build/fidelity.json (and
-// copied into BENCHMARKS.md by hand).
+// written into BENCHMARKS.md by `node bench/run.mjs --only=fidelity`). FIDELITY_DEBUG=1 keeps the
+// screenshots of failing files and posed drawings in the test's output folder.
 import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -142,7 +143,7 @@ function record(name: string, figures: Record<string, Comparison>): void {
   writeFileSync(join(out, name), `${JSON.stringify(figures, null, 2)}\n`);
 }
 
-test('every SVG draws in the editor as Chromium draws the file', async ({ page, browser }) => {
+test('every SVG draws in the editor as Chromium draws the file', async ({ page, browser }, testInfo) => {
   test.setTimeout(300_000);
   // Its own context (window): a second tab of the editor's would be in the background, and wait for frames.
   const native = await (await browser.newContext()).newPage();
@@ -151,7 +152,6 @@ test('every SVG draws in the editor as Chromium draws the file', async ({ page, 
   const failures: string[] = [];
   for (const path of FILES) {
     const name = basename(path);
-    const t0 = Date.now();
     await page.getByTestId('file-input').setInputFiles(path);
     const state = await waitForFile(page, name);
     expect(state.error, name).toBeNull();
@@ -159,11 +159,9 @@ test('every SVG draws in the editor as Chromium draws the file', async ({ page, 
     const { width, height } = shownSize(frame!);
     const shown = await editorShot(page, width, height);
     const reference = await nativeShot(native, readFileSync(path, 'utf8'), width, height);
-    const t1 = Date.now();
     const c = await compare(native, reference, shown);
-    if (process.env.FIDELITY_DEBUG) console.log(name, t1 - t0, Date.now() - t1);
     figures[path.includes('/shared/') ? path.slice(path.indexOf('svg/')) : path.includes('/paint/') ? `paint/${name}` : `samples/${name}`] = c;
-    if (process.env.FIDELITY_DEBUG && c.different > MAX_DIFFERENT) for (const [n, b] of [['shown', shown], ['native', reference]]) writeFileSync(`build/${name}-${n}.png`, Buffer.from(b, 'base64'));
+    if (process.env.FIDELITY_DEBUG && c.different > MAX_DIFFERENT) for (const [n, b] of [['shown', shown], ['native', reference]]) writeFileSync(testInfo.outputPath(`${name}-${n}.png`), Buffer.from(b, 'base64'));
     if (!(c.painted > 0.002 && c.different <= MAX_DIFFERENT)) failures.push(`${name}: ${(100 * c.different).toFixed(2)}% differ, ${(100 * c.painted).toFixed(1)}% painted`);
   }
   record('fidelity.json', figures);
@@ -195,7 +193,7 @@ for (const [label, path] of [
     if (process.env.FIDELITY_DEBUG) for (const [n, b] of [['shown', shown], ['posed', posedShot]]) writeFileSync(testInfo.outputPath(`${n}.png`), Buffer.from(b, 'base64'));
     // The view is the pose (not the rest drawing): the rest differs from it where the drawing moved.
     const rest = await compare(native, restShot, shown);
-    record(`fidelity-posed-${basename(path, '.svg')}.json`, { [`${label} posed`]: c, 'rest vs posed view': rest });
+    record(`fidelity-posed-${basename(path, '.svg')}.json`, { [`${label} posed`]: c, [`${label} rest vs posed view`]: rest });
     expect(c.painted).toBeGreaterThan(0.01);
     expect(c.different).toBeLessThanOrEqual(MAX_DIFFERENT);
     expect(rest.different, 'the rest drawing differs from the posed view').toBeGreaterThan(0.005);
