@@ -36,9 +36,13 @@ export function invert(m: Matrix): Matrix | null {
   return inverse(m);
 }
 
-/** Parses an SVG transform list ("translate(10) rotate(30 5 5) …"); throws with the parser's reason. */
+/**
+ * Parses an SVG transform list ("translate(10) rotate(30 5 5) …"); throws with the parser's reason.
+ * The grammar lets transforms follow one another with no separator ("translate(84.9)scale(.9375)",
+ * as flag-icons and svgo write them), which the parser library does not accept: a space goes in.
+ */
 export function parseTransform(text: string): Matrix {
-  const trimmed = text.trim();
+  const trimmed = text.trim().replace(/\)(?=[a-zA-Z])/g, ') ');
   if (trimmed === '') return { ...IDENTITY };
   const m = compose(...fromDefinition(fromTransformAttribute(trimmed)), IDENTITY);
   for (const v of [m.a, m.b, m.c, m.d, m.e, m.f]) if (!Number.isFinite(v)) throw new Error('a transform value is not finite');

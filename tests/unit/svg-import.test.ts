@@ -174,6 +174,13 @@ describe('structure', () => {
     expect(t.b).toBeCloseTo(2, 12);
   });
 
+  test('transforms written with no separator between them (flag-icons, svgo) read as the spaced list', () => {
+    const tight = parseSVG(svg('<g transform="translate(84.9)scale(.9375)rotate(30,1,2)"><path d="M1 0 L1 3"/></g>'));
+    const spaced = parseSVG(svg('<g transform="translate(84.9) scale(.9375) rotate(30,1,2)"><path d="M1 0 L1 3"/></g>'));
+    expect(tight.shapes[0].transform).toEqual(spaced.shapes[0].transform);
+    expect(tight.shapes[0].transform.e).not.toBe(0);
+  });
+
   test('use/defs instantiate referenced shapes at their offset, once per use', () => {
     const doc = parseSVG(svg(`<defs><path id="tri" d="M0 0 L10 0 L5 8 Z" fill="red"/></defs>
       <use xlink:href="#tri" x="20" y="30"/><use href="#tri" transform="translate(50 0)"/>`));
