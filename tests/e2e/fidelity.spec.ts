@@ -29,6 +29,8 @@ const FILES = [
   ...readdirSync(sharedSvg).flatMap((dir) => readdirSync(join(sharedSvg, dir)).filter((f) => f.endsWith('.svg')).map((f) => join(sharedSvg, dir, f))),
   ...readdirSync(publicFile('samples')).filter((f) => f.endsWith('.svg')).map((f) => publicFile(`samples/${f}`)),
   ...readdirSync(paint).filter((f) => f.endsWith('.svg')).map((f) => join(paint, f)),
+  // More files to try (drawings nobody here tuned on), e.g. SPLINEKIT_FIDELITY_DIR=~/Downloads/svgs.
+  ...(process.env.SPLINEKIT_FIDELITY_DIR ? readdirSync(process.env.SPLINEKIT_FIDELITY_DIR).filter((f) => f.endsWith('.svg')).map((f) => join(process.env.SPLINEKIT_FIDELITY_DIR!, f)) : []),
 ].sort();
 
 interface Comparison {
@@ -160,7 +162,7 @@ test('every SVG draws in the editor as Chromium draws the file', async ({ page, 
     const shown = await editorShot(page, width, height);
     const reference = await nativeShot(native, readFileSync(path, 'utf8'), width, height);
     const c = await compare(native, reference, shown);
-    figures[path.includes('/shared/') ? path.slice(path.indexOf('svg/')) : path.includes('/paint/') ? `paint/${name}` : `samples/${name}`] = c;
+    figures[path.includes('/shared/') ? path.slice(path.indexOf('svg/')) : path.includes('/paint/') ? `paint/${name}` : path.includes('/public/') ? `samples/${name}` : path] = c;
     if (process.env.FIDELITY_DEBUG && c.different > MAX_DIFFERENT) for (const [n, b] of [['shown', shown], ['native', reference]]) writeFileSync(testInfo.outputPath(`${name}-${n}.png`), Buffer.from(b, 'base64'));
     if (!(c.painted > 0.002 && c.different <= MAX_DIFFERENT)) failures.push(`${name}: ${(100 * c.different).toFixed(2)}% differ, ${(100 * c.painted).toFixed(1)}% painted`);
   }
