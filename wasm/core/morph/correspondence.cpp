@@ -1,0 +1,216 @@
+#include "correspondence.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace splinekit::morph {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Ties (equal work up to rounding) go to the earlier candidate: a diagonal step before a one-sided
+// one, a lower start before a higher one, forwards before backwards, so that rounding noise (as
+// from moving both keys) cannot flip the choice between equally good paths.
+double tie(double best) { return std::isfinite(best) ? 1e-11 * (1.0 + std::abs(best)) : 0.0; }
+
+// Cost of one step into vertex (i2, j2) (relative indices), B shifted by `start`.
+struct StepCosts {
+  const ChainMeasure& a;
+  const ChainMeasure& b;
+  bool closed;
+  int start;
+  const WorkOptions& o;
+  int m() const { return int(a.length.size()); }
+  int n() const { return int(b.length.size()); }
+  int ai(int i) const { return closed ? i % m() : i; }
+  int bj(int j) const { return closed ? (j + start) % n() : j; }
+  // The kink paid at vertex (i, j) reached by a step that advanced A (da) and/or B (db).
+  double kink(int i, int j, bool da, bool db) const {
+    return kinking_work(da ? a.kink[size_t(ai(i))] : 0.0, db ? b.kink[size_t(bj(j))] : 0.0, o);
+  }
+  double both(int i, int j) const {  // from (i, j) to (i+1, j+1)
+    const double la = a.length[size_t(ai(i))], lb = b.length[size_t(bj(j))];
+    return stretching_work(la, lb, o) + bending_work(a.bending[size_t(ai(i))], b.bending[size_t(bj(j))], la, lb, o) +
+           kink(i + 1, j + 1, true, true);
+  }
+  double first(int i, int j) const {  // from (i, j) to (i+1, j)
+    const double la = a.length[size_t(ai(i))];
+    return stretching_work(la, 0, o) + bending_work(a.bending[size_t(ai(i))], 0, la, 0, o) +
+           kink(i + 1, j, true, false);
+  }
+  double second(int i, int j) const {  // from (i, j) to (i, j+1)
+    const double lb = b.length[size_t(bj(j))];
+    return stretching_work(0, lb, o) + bending_work(0, b.bending[size_t(bj(j))], 0, lb, o) +
+           kink(i, j + 1, false, true);
+  }
+};
+
+}  // namespace
+
+int reversed_anchor(int b, int anchors, bool closed) { return closed ? (anchors - b) % anchors : anchors - 1 - b; }
+
+double path_work(const ChainMeasure& a, const ChainMeasure& b, bool closed, int start, const std::vector<Move>& moves,
+                 const WorkOptions& o) {
+  const StepCosts c{a, b, closed, start, o};
+  int i = 0, j = 0;
+  double w = 0;
+  for (Move mv : moves) {
+    if (mv == Move::kBoth)
+      w += c.both(i++, j++);
+    else if (mv == Move::kFirst)
+      w += c.first(i++, j);
+    else
+      w += c.second(i, j++);
+  }
+  if (i != c.m() || j != c.n()) return kInf;
+  return w;
+}
+
+void CorrespondenceSearch::tables(const ChainMeasure& a, const ChainMeasure& b, bool closed, const WorkOptions& o) {
+  // Start-independent parts: stretching + bending of every segment pair, and of each segment
+  // against a point; kinks of every anchor pair and of each anchor against a straight point.
+  const int m = int(a.length.size()), n = int(b.length.size());
+  const int ma = int(a.kink.size()), nb = int(b.kink.size());
+  diag_.resize(size_t(m) * n);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const double la = a.length[size_t(i)], lb = b.length[size_t(j)];
+      diag_[size_t(i) * n + j] =
+          stretching_work(la, lb, o) + bending_work(a.bending[size_t(i)], b.bending[size_t(j)], la, lb, o);
+    }
+  }
+  kink_.resize(size_t(ma) * nb);
+  for (int i = 0; i < ma; ++i)
+    for (int j = 0; j < nb; ++j) kink_[size_t(i) * nb + j] = kinking_work(a.kink[size_t(i)], b.kink[size_t(j)], o);
+  first_.resize(size_t(m));
+  for (int i = 0; i < m; ++i) {
+    const double la = a.length[size_t(i)];
+    first_[size_t(i)] = stretching_work(la, 0, o) + bending_work(a.bending[size_t(i)], 0, la, 0, o) +
+                        kinking_work(a.kink[size_t(closed ? (i + 1) % ma : i + 1)], 0, o);
+  }
+  second_.resize(size_t(n));
+  for (int j = 0; j < n; ++j) {
+    const double lb = b.length[size_t(j)];
+    second_[size_t(j)] = stretching_work(0, lb, o) + bending_work(0, b.bending[size_t(j)], 0, lb, o) +
+                         kinking_work(0, b.kink[size_t(closed ? (j + 1) % nb : j + 1)], o);
+  }
+}
+
+double CorrespondenceSearch::solve_start(const ChainMeasure& a, const ChainMeasure& b, bool closed, int start,
+                                         const std::vector<AnchorPin>& pins, const WorkOptions& o,
+                                         std::vector<Move>* moves) {
+  tables(a, b, closed, o);
+  return solve(a, b, closed, start, pins, o, moves);
+}
+
+double CorrespondenceSearch::solve(const ChainMeasure& a, const ChainMeasure& b, bool closed, int start,
+                                   const std::vector<AnchorPin>& pins, const WorkOptions& o, std::vector<Move>* moves) {
+  const int m = int(a.length.size()), n = int(b.length.size());
+  const int nb = int(b.kink.size());
+  const size_t w = size_t(n) + 1;
+  cost_.assign((size_t(m) + 1) * w, kInf);
+  step_.assign((size_t(m) + 1) * w, -1);
+  // Pins relative to this start: vertex (pa, pb) must be on the path.
+  auto allowed = [&](int i, int j) {
+    for (const AnchorPin& p : pins) {
+      const int pb = closed ? ((p.b - start) % n + n) % n : p.b;
+      const int pa = p.a;
+      if (closed && pa == 0) {
+        if (pb != 0) return false;
+        continue;
+      }
+      if (!((i <= pa && j <= pb) || (i >= pa && j >= pb))) return false;
+    }
+    return true;
+  };
+  auto bseg = [&](int j) { return closed ? (j + start) % n : j; };
+  auto banchor = [&](int j) { return closed ? (j + start) % nb : j; };
+  // With pins, a step must stay on one side of each pinned vertex (a diagonal cannot jump it).
+  auto step_ok = [&](int i0, int j0, int i, int j) {
+    for (const AnchorPin& p : pins) {
+      const int pb = closed ? ((p.b - start) % n + n) % n : p.b;
+      if (closed && p.a == 0) continue;
+      const bool before = i0 <= p.a && j0 <= pb && i <= p.a && j <= pb;
+      const bool after = i0 >= p.a && j0 >= pb && i >= p.a && j >= pb;
+      if (!before && !after) return false;
+    }
+    return true;
+  };
+  cost_[0] = allowed(0, 0) ? 0.0 : kInf;
+  for (int i = 0; i <= m; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      if (i == 0 && j == 0) continue;
+      if (!pins.empty() && !allowed(i, j)) continue;
+      double best = kInf;
+      int8_t how = -1;
+      const bool pinned = !pins.empty();
+      if (i > 0 && j > 0 && (!pinned || step_ok(i - 1, j - 1, i, j))) {
+        const double k = kink_[size_t(closed ? i % int(a.kink.size()) : i) * nb + size_t(banchor(j))];
+        const double c = cost_[size_t(i - 1) * w + size_t(j - 1)] + diag_[size_t(i - 1) * n + size_t(bseg(j - 1))] + k;
+        if (c < best) best = c, how = int8_t(Move::kBoth);
+      }
+      if (i > 0 && (!pinned || step_ok(i - 1, j, i, j))) {
+        const double step = first_[size_t(i - 1)];
+        const double c = cost_[size_t(i - 1) * w + size_t(j)] + step;
+        if (c < best - tie(best)) best = c, how = int8_t(Move::kFirst);
+      }
+      if (j > 0 && (!pinned || step_ok(i, j - 1, i, j))) {
+        const double step = second_[size_t(bseg(j - 1))];
+        const double c = cost_[size_t(i) * w + size_t(j - 1)] + step;
+        if (c < best - tie(best)) best = c, how = int8_t(Move::kSecond);
+      }
+      cost_[size_t(i) * w + size_t(j)] = best;
+      step_[size_t(i) * w + size_t(j)] = how;
+    }
+  }
+  counters_.cells += int64_t(m + 1) * (n + 1);
+  counters_.starts += 1;
+  const double total = cost_[size_t(m) * w + size_t(n)];
+  if (moves && std::isfinite(total)) {
+    moves->clear();
+    int i = m, j = n;
+    while (i > 0 || j > 0) {
+      const Move mv = Move(step_[size_t(i) * w + size_t(j)]);
+      moves->push_back(mv);
+      if (mv != Move::kSecond) --i;
+      if (mv != Move::kFirst) --j;
+    }
+    std::reverse(moves->begin(), moves->end());
+  }
+  return total;
+}
+
+Correspondence CorrespondenceSearch::search(const ChainMeasure& a, const ChainMeasure& b_forward,
+                                            const ChainMeasure& b_backward, bool closed,
+                                            const std::vector<AnchorPin>& pins, const WorkOptions& o,
+                                            bool both_directions) {
+  Correspondence best;
+  const int n = int(b_forward.length.size());
+  const int nb = int(b_forward.kink.size());
+  for (int dir = 0; dir < (both_directions ? 2 : 1); ++dir) {
+    const ChainMeasure& b = dir == 0 ? b_forward : b_backward;
+    std::vector<AnchorPin> p = pins;
+    if (dir == 1)
+      for (AnchorPin& q : p) q.b = reversed_anchor(q.b, nb, closed);
+    const int starts = closed ? n : 1;
+    tables(a, b, closed, o);
+    for (int s = 0; s < starts; ++s) {
+      const double w = solve(a, b, closed, s, p, o, nullptr);
+      if (w < best.work - tie(best.work)) {
+        best.work = w;
+        best.start = s;
+        best.reversed = dir == 1;
+      }
+    }
+  }
+  if (std::isfinite(best.work)) {
+    std::vector<AnchorPin> p = pins;
+    if (best.reversed)
+      for (AnchorPin& q : p) q.b = reversed_anchor(q.b, nb, closed);
+    best.work = solve_start(a, best.reversed ? b_backward : b_forward, closed, best.start, p, o, &best.moves);
+  }
+  return best;
+}
+
+}  // namespace splinekit::morph
