@@ -84,3 +84,6 @@ export {
 export { DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SURFACE_SCHEMES, type SurfaceScheme, type TraceOptions } from './surface/trace-options.js';
 export { mapSplines, type SvgMapOptions } from './surface/svg-map.js';
 export { randomMeshPoints } from './surface/sampling.js';
+export { Morph, type MorphContour, type MorphCorrespondence, type MorphKey } from './morph/morph.js';
+export { MORPH_INTERPOLATIONS, type MorphDirection, type MorphInterpolation, type MorphOptions, type MorphPin } from './morph/options.js';
+export type { MorphAnimationOptions, MorphStyle } from './morph/svg-out.js';

@@ -57,7 +57,7 @@ TEST(MorphCorrespondence, IdenticalChainsCostNothingAlongTheDiagonal) {
   for (bool closed : {false, true}) {
     const ChainMeasure a = random_measure(rng, 6, closed);
     CorrespondenceSearch s;
-    const Correspondence c = s.search(a, a, reversed_measure(a, closed), closed, {}, {}, true);
+    const Correspondence c = s.search(a, a, reversed_measure(a, closed), closed, {}, {}, CorrespondenceSearch::kBoth);
     EXPECT_EQ(c.work, 0.0);
     EXPECT_EQ(c.start, 0);
     EXPECT_FALSE(c.reversed);
@@ -80,7 +80,7 @@ TEST(MorphCorrespondence, SearchEqualsBruteForceOverEveryPath) {
                 [&](const std::vector<Move>& p) { brute = std::min(brute, path_work(a, b, closed, start, p, o)); });
     }
     CorrespondenceSearch s;
-    const Correspondence c = s.search(a, b, reversed_measure(b, closed), closed, {}, o, false);
+    const Correspondence c = s.search(a, b, reversed_measure(b, closed), closed, {}, o, CorrespondenceSearch::kForward);
     EXPECT_NEAR(c.work, brute, 1e-12 * (1 + brute)) << "trial " << trial;
     EXPECT_NEAR(path_work(a, b, closed, c.start, c.moves, o), c.work, 1e-12 * (1 + brute));
   }
@@ -92,8 +92,8 @@ TEST(MorphCorrespondence, BothDirectionsGiveTheSameWork) {
     const ChainMeasure a = random_measure(rng, 5, closed), b = random_measure(rng, 7, closed);
     const ChainMeasure rb = reversed_measure(b, closed);
     CorrespondenceSearch s;
-    const Correspondence forward = s.search(a, b, rb, closed, {}, {}, true);
-    const Correspondence backward = s.search(a, rb, b, closed, {}, {}, true);
+    const Correspondence forward = s.search(a, b, rb, closed, {}, {}, CorrespondenceSearch::kBoth);
+    const Correspondence backward = s.search(a, rb, b, closed, {}, {}, CorrespondenceSearch::kBoth);
     EXPECT_NEAR(forward.work, backward.work, 1e-12);
     EXPECT_NE(forward.reversed, backward.reversed);
   }
@@ -103,9 +103,10 @@ TEST(MorphCorrespondence, PinsArePassedThroughAndCostAtLeastTheFreeOptimum) {
   std::mt19937 rng(11);
   const ChainMeasure a = random_measure(rng, 6, true), b = random_measure(rng, 6, true);
   CorrespondenceSearch s;
-  const Correspondence free = s.search(a, b, reversed_measure(b, true), true, {}, {}, false);
+  const Correspondence free = s.search(a, b, reversed_measure(b, true), true, {}, {}, CorrespondenceSearch::kForward);
   const std::vector<AnchorPin> pins = {{0, 3}, {2, 4}};
-  const Correspondence pinned = s.search(a, b, reversed_measure(b, true), true, pins, {}, false);
+  const Correspondence pinned =
+      s.search(a, b, reversed_measure(b, true), true, pins, {}, CorrespondenceSearch::kForward);
   ASSERT_TRUE(std::isfinite(pinned.work));
   EXPECT_GE(pinned.work, free.work - 1e-12);
   EXPECT_EQ(pinned.start, 3);  // A's anchor 0 is pinned to B's anchor 3

@@ -101,11 +101,11 @@ double CorrespondenceSearch::solve_start(const ChainMeasure& a, const ChainMeasu
                                          const std::vector<AnchorPin>& pins, const WorkOptions& o,
                                          std::vector<Move>* moves) {
   tables(a, b, closed, o);
-  return solve(a, b, closed, start, pins, o, moves);
+  return solve(a, b, closed, start, pins, moves);
 }
 
 double CorrespondenceSearch::solve(const ChainMeasure& a, const ChainMeasure& b, bool closed, int start,
-                                   const std::vector<AnchorPin>& pins, const WorkOptions& o, std::vector<Move>* moves) {
+                                   const std::vector<AnchorPin>& pins, std::vector<Move>* moves) {
   const int m = int(a.length.size()), n = int(b.length.size());
   const int nb = int(b.kink.size());
   const size_t w = size_t(n) + 1;
@@ -183,12 +183,12 @@ double CorrespondenceSearch::solve(const ChainMeasure& a, const ChainMeasure& b,
 
 Correspondence CorrespondenceSearch::search(const ChainMeasure& a, const ChainMeasure& b_forward,
                                             const ChainMeasure& b_backward, bool closed,
-                                            const std::vector<AnchorPin>& pins, const WorkOptions& o,
-                                            bool both_directions) {
+                                            const std::vector<AnchorPin>& pins, const WorkOptions& o, int directions) {
   Correspondence best;
   const int n = int(b_forward.length.size());
   const int nb = int(b_forward.kink.size());
-  for (int dir = 0; dir < (both_directions ? 2 : 1); ++dir) {
+  for (int dir = 0; dir < 2; ++dir) {
+    if (!(directions & (dir == 0 ? kForward : kBackward))) continue;
     const ChainMeasure& b = dir == 0 ? b_forward : b_backward;
     std::vector<AnchorPin> p = pins;
     if (dir == 1)
@@ -196,7 +196,7 @@ Correspondence CorrespondenceSearch::search(const ChainMeasure& a, const ChainMe
     const int starts = closed ? n : 1;
     tables(a, b, closed, o);
     for (int s = 0; s < starts; ++s) {
-      const double w = solve(a, b, closed, s, p, o, nullptr);
+      const double w = solve(a, b, closed, s, p, nullptr);
       if (w < best.work - tie(best.work)) {
         best.work = w;
         best.start = s;

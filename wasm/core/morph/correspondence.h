@@ -57,17 +57,18 @@ class CorrespondenceSearch {
   double solve_start(const ChainMeasure& a, const ChainMeasure& b, bool closed, int start,
                      const std::vector<AnchorPin>& pins, const WorkOptions& options, std::vector<Move>* moves);
 
-  // Every start (closed) in B's forward direction and, with both_directions, backwards.
+  // Every start (closed) in the directions of B given by `directions` (kForward | kBackward).
   // `b_backward` is the measure of reversed(B) (chain.h); pins are given in forward indices.
   Correspondence search(const ChainMeasure& a, const ChainMeasure& b_forward, const ChainMeasure& b_backward,
-                        bool closed, const std::vector<AnchorPin>& pins, const WorkOptions& options,
-                        bool both_directions);
+                        bool closed, const std::vector<AnchorPin>& pins, const WorkOptions& options, int directions);
+  static constexpr int kForward = 1, kBackward = 2, kBoth = 3;
 
   const SearchCounters& counters() const { return counters_; }
 
  private:
+  // The search for one start on the tables of the last tables() call.
   double solve(const ChainMeasure& a, const ChainMeasure& b, bool closed, int start, const std::vector<AnchorPin>& pins,
-               const WorkOptions& options, std::vector<Move>* moves);
+               std::vector<Move>* moves);
   void tables(const ChainMeasure& a, const ChainMeasure& b, bool closed, const WorkOptions& options);
   // Scratch, sized on use and kept between calls.
   std::vector<double> cost_, diag_, first_, second_, kink_;

@@ -47,6 +47,8 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
   if (std::string e = validate(options.work); !e.empty()) return e;
   if (!std::isfinite(options.segment_limit) || options.segment_limit < 0)
     return "the segment limit must be a finite number >= 0";
+  if (!std::isfinite(options.length_unit) || options.length_unit <= 0)
+    return "the length unit must be a finite number > 0";
   if (!std::isfinite(options.continuity_tolerance) || options.continuity_tolerance < 0)
     return "the continuity tolerance must be a finite number >= 0";
   for (size_t k = 0; k < pins.size(); ++k) {
@@ -61,8 +63,8 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
   const double size_b = std::hypot(box_b[2] - box_b[0], box_b[3] - box_b[1]);
   if (!(size_a > 0)) return "the first shape has zero size (all its points coincide)";
   if (!(size_b > 0)) return "the second shape has zero size (all its points coincide)";
-  // Lengths in the work terms are measured in units of the mean total length of the two drawings
-  // (a rotation changes a box's size, not a length).
+  // Lengths in the work terms are measured in `length_unit`s of the mean total length of the two
+  // drawings (a rotation changes a box's size, not a length).
   double total_length[2] = {0, 0};
 
   // 1. Chains.
@@ -91,7 +93,7 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
   std::vector<KnotChain> ca, cb;
   if (std::string e = chains_of(a, size_a, ca); !e.empty()) return "the first shape, " + e;
   if (std::string e = chains_of(b, size_b, cb); !e.empty()) return "the second shape, " + e;
-  const double reference = 0.5 * (total_length[0] + total_length[1]);
+  const double reference = options.length_unit * 0.5 * (total_length[0] + total_length[1]);
 
   // 2. Pairing, pulled by pins.
   const std::vector<ContourShape> da = describe_contours(a), db = describe_contours(b);
@@ -154,8 +156,13 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
       const KnotChain back = reversed(chain_b);
       const ChainMeasure ma = measure(chain_a, reference), mf = measure(chain_b, reference),
                          mb = measure(back, reference);
-      const Correspondence c =
-          search_.search(ma, mf, mb, chain_a.closed, anchor_pins, options.work, options.both_directions);
+      int directions = CorrespondenceSearch::kBoth;
+      if (options.direction == Direction::kForward) directions = CorrespondenceSearch::kForward;
+      if (options.direction == Direction::kWinding && chain_a.closed) {
+        const bool same = (da[size_t(i)].area >= 0) == (db[size_t(bc.contour_b)].area >= 0);
+        directions = same ? CorrespondenceSearch::kForward : CorrespondenceSearch::kBackward;
+      }
+      const Correspondence c = search_.search(ma, mf, mb, chain_a.closed, anchor_pins, options.work, directions);
       if (!std::isfinite(c.work)) {
         return "the pins on contour " + std::to_string(i) +
                " of the first shape cross each other (no correspondence keeps them all)";

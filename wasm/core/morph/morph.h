@@ -24,11 +24,23 @@
 
 namespace splinekit::morph {
 
+enum class Direction { kWinding = 0, kBoth = 1, kForward = 2 };
+
 struct MorphOptions {
   WorkOptions work;             // §5 coefficients (paper's defaults)
   double segment_limit = 0.05;  // max segment arc length, fraction of the contour's width, perimeter/π (§6); 0: none
   double continuity_tolerance = 1e-3;  // C1 test (the paper's TOL) as a fraction of the drawing's size
-  bool both_directions = true;         // also search each contour of B traversed backwards
+  // Which directions of B's contours are searched. kWinding (default): a closed contour of B is
+  // traversed in the direction whose winding is that of its partner in A, open paths both ways.
+  // The work of §5 does not see orientation: a reversed match can cost less yet turns the blend
+  // inside out on the way (Nimbus Mono G → Nimbus Roman G: 54.8 reversed, 80.1 forward, with in-
+  // betweens that cross themselves). kBoth: the least work over both directions; kForward: as given.
+  Direction direction = Direction::kWinding;
+  // The unit of length of the work terms, as a fraction of the mean total length of the two keys'
+  // contours. Stretching work grows with length and bending work shrinks with it, so the unit sets
+  // their balance; 0.01 makes a drawing's outline 100 units long, the scale of the paper's
+  // 64-point glyphs. Tied to the keys' length, so moving, rotating or scaling both keys changes nothing.
+  double length_unit = 0.01;
 };
 
 // A pinned correspondence in document space: the point of A nearest (ax, ay) meets the point of B
