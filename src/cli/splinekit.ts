@@ -8,10 +8,11 @@ import { readFileSync } from 'node:fs';
 import { init } from '../index.js';
 import { UsageError, type Command } from './common.js';
 import { info } from './info.js';
+import { morph } from './morph.js';
 import { skin } from './skin.js';
 import { geodesic, trace } from './surface.js';
 
-const COMMANDS: Record<string, Command> = { info, skin, geodesic, trace };
+const COMMANDS: Record<string, Command> = { info, skin, geodesic, trace, morph };
 
 function help(): string {
   const lines = ['usage: splinekit <command> [options]', '', 'commands:'];

@@ -102,7 +102,7 @@ export interface SurfaceMeshHandle extends EmbindObject {
 export interface MorphHandle extends EmbindObject {
   resizePins(n: number): void;
   pins(): Float64Array;
-  setup(a: SplineSetHandle, b: SplineSetHandle, stretching: number, bending: number, kinking: number, kinkExponent: number, segmentLimit: number, continuityTolerance: number, lengthUnit: number, direction: number): number;
+  setup(a: SplineSetHandle, b: SplineSetHandle, stretching: number, bending: number, kinking: number, kinkExponent: number, segmentLimit: number, continuityTolerance: number, lengthUnit: number, travel: number, direction: number): number;
   evaluate(t: number, mode: number): number;
   points(): Float64Array;
   starts(): Int32Array;

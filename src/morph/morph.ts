@@ -137,6 +137,7 @@ export class Morph {
       optional(options.segmentLimit, 'segmentLimit'),
       optional(options.continuityTolerance, 'continuityTolerance'),
       optional(options.lengthUnit, 'lengthUnit'),
+      optional(options.travel, 'travel'),
     ] as const;
     Morph.modeOf(options.interpolation ?? 'linear');
     const pins = options.pins ?? [];
@@ -221,9 +222,26 @@ export class Morph {
     return parseSVG(this.toSVG(t), { name: `morph at t=${t}` });
   }
 
-  /** The in-between at `t` in the CLI's `info` schema (continuity detected as on import). */
+  /**
+   * The in-between at `t` in the CLI's `info` schema: control points in document space, one
+   * continuity tag per junction detected as on import (relative to the keys' size).
+   */
   toJSON(t: number): SplinesJSON {
-    return this.document(t).toJSON();
+    const splines = this.splines(t);
+    const set = SplineSet.from(splines);
+    try {
+      const size = Math.hypot(this.frame[2] - this.frame[0], this.frame[3] - this.frame[1]);
+      const tags = set.classify(size);
+      return {
+        splines: splines.map((s, i) => {
+          const points: [number, number][] = [];
+          for (let k = 0; k < s.points.length; k += 2) points.push([s.points[k], s.points[k + 1]]);
+          return { closed: s.closed, points, continuity: tags[i].map((tag) => tag.kind) };
+        }),
+      };
+    } finally {
+      set.dispose();
+    }
   }
 
   /**

@@ -12,6 +12,13 @@ export interface MorphOptions {
   /** e_k, the exponent of the kinking work (eq. 5). Default 1 (the paper: 0.00001–10 work alike). */
   kinkExponent?: number;
   /**
+   * c_t of the travel work (beyond the paper): the squared distance between corresponding points,
+   * each in its drawing's normalized frame (centroid 0, RMS radius 1), times the length they span.
+   * It keeps the correspondence from sliding along outlines made of many similar segments.
+   * Default 1; 0 gives the paper's model, in which a rotated copy costs no work.
+   */
+  travel?: number;
+  /**
    * Longest segment before knots are inserted (§6), as a fraction of each contour's width
    * (its length / π, which a rotation does not change). Default 0.05; 0 turns the limit off.
    */

@@ -25,7 +25,7 @@ class MorphHandle {
 
   // Options: NaN leaves the core's default; direction < 0 likewise (0 winding, 1 both, 2 forward).
   int setup(SplineSetHandle& a, SplineSetHandle& b, double stretching, double bending, double kinking,
-            double kink_exponent, double segment_limit, double continuity_tolerance, double length_unit,
+            double kink_exponent, double segment_limit, double continuity_tolerance, double length_unit, double travel,
             int direction) {
     if (a.validate() != kOk) return fail("the first shape: " + a.error());
     if (b.validate() != kOk) return fail("the second shape: " + b.error());
@@ -40,6 +40,7 @@ class MorphHandle {
     set(segment_limit, o.segment_limit);
     set(continuity_tolerance, o.continuity_tolerance);
     set(length_unit, o.length_unit);
+    set(travel, o.work.travel);
     if (direction >= 0 && direction <= 2) o.direction = Direction(direction);
     std::vector<MorphPin> pins(pins_.size() / 4);
     for (size_t k = 0; k < pins.size(); ++k)

@@ -19,9 +19,15 @@ ChainMeasure random_measure(std::mt19937& rng, int segments, bool closed) {
   for (int k = 0; k < segments; ++k) {
     m.length.push_back(len(rng));
     m.bending.push_back(ang(rng));
+    m.middle.push_back(ang(rng));
+    m.middle.push_back(ang(rng));
   }
   const int anchors = closed ? segments : segments + 1;
-  for (int a = 0; a < anchors; ++a) m.kink.push_back((!closed && (a == 0 || a == segments)) ? 0.0 : ang(rng));
+  for (int a = 0; a < anchors; ++a) {
+    m.kink.push_back((!closed && (a == 0 || a == segments)) ? 0.0 : ang(rng));
+    m.anchor.push_back(ang(rng));
+    m.anchor.push_back(ang(rng));
+  }
   return m;
 }
 
@@ -45,8 +51,15 @@ ChainMeasure reversed_measure(const ChainMeasure& m, bool closed) {
   for (int k = n - 1; k >= 0; --k) {
     r.length.push_back(m.length[k]);
     r.bending.push_back(-m.bending[k]);
+    r.middle.push_back(m.middle[2 * k]);
+    r.middle.push_back(m.middle[2 * k + 1]);
   }
-  for (int i = 0; i < a; ++i) r.kink.push_back(-m.kink[size_t(reversed_anchor(i, a, closed))]);
+  for (int i = 0; i < a; ++i) {
+    const int j = reversed_anchor(i, a, closed);
+    r.kink.push_back(-m.kink[size_t(j)]);
+    r.anchor.push_back(m.anchor[2 * size_t(j)]);
+    r.anchor.push_back(m.anchor[2 * size_t(j) + 1]);
+  }
   return r;
 }
 

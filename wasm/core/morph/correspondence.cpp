@@ -25,6 +25,8 @@ struct StepCosts {
   int n() const { return int(b.length.size()); }
   int ai(int i) const { return closed ? i % m() : i; }
   int bj(int j) const { return closed ? (j + start) % n() : j; }
+  int aanchor(int i) const { return closed ? i % int(a.kink.size()) : i; }
+  int banchor(int j) const { return closed ? (j + start) % int(b.kink.size()) : j; }
   // The kink paid at vertex (i, j) reached by a step that advanced A (da) and/or B (db).
   double kink(int i, int j, bool da, bool db) const {
     return kinking_work(da ? a.kink[size_t(ai(i))] : 0.0, db ? b.kink[size_t(bj(j))] : 0.0, o);
@@ -32,16 +34,19 @@ struct StepCosts {
   double both(int i, int j) const {  // from (i, j) to (i+1, j+1)
     const double la = a.length[size_t(ai(i))], lb = b.length[size_t(bj(j))];
     return stretching_work(la, lb, o) + bending_work(a.bending[size_t(ai(i))], b.bending[size_t(bj(j))], la, lb, o) +
+           travel_work(la, lb, &a.middle[2 * size_t(ai(i))], &b.middle[2 * size_t(bj(j))], o) +
            kink(i + 1, j + 1, true, true);
   }
   double first(int i, int j) const {  // from (i, j) to (i+1, j)
     const double la = a.length[size_t(ai(i))];
     return stretching_work(la, 0, o) + bending_work(a.bending[size_t(ai(i))], 0, la, 0, o) +
+           travel_work(la, 0, &a.middle[2 * size_t(ai(i))], &b.anchor[2 * size_t(banchor(j))], o) +
            kink(i + 1, j, true, false);
   }
   double second(int i, int j) const {  // from (i, j) to (i, j+1)
     const double lb = b.length[size_t(bj(j))];
     return stretching_work(0, lb, o) + bending_work(0, b.bending[size_t(bj(j))], 0, lb, o) +
+           travel_work(0, lb, &a.anchor[2 * size_t(aanchor(i))], &b.middle[2 * size_t(bj(j))], o) +
            kink(i, j + 1, false, true);
   }
 };
@@ -68,6 +73,7 @@ double path_work(const ChainMeasure& a, const ChainMeasure& b, bool closed, int 
 }
 
 void CorrespondenceSearch::tables(const ChainMeasure& a, const ChainMeasure& b, bool closed, const WorkOptions& o) {
+  travel_ = o.travel;
   // Start-independent parts: stretching + bending of every segment pair, and of each segment
   // against a point; kinks of every anchor pair and of each anchor against a straight point.
   const int m = int(a.length.size()), n = int(b.length.size());
@@ -76,8 +82,9 @@ void CorrespondenceSearch::tables(const ChainMeasure& a, const ChainMeasure& b, 
   for (int i = 0; i < m; ++i) {
     for (int j = 0; j < n; ++j) {
       const double la = a.length[size_t(i)], lb = b.length[size_t(j)];
-      diag_[size_t(i) * n + j] =
-          stretching_work(la, lb, o) + bending_work(a.bending[size_t(i)], b.bending[size_t(j)], la, lb, o);
+      diag_[size_t(i) * n + j] = stretching_work(la, lb, o) +
+                                 bending_work(a.bending[size_t(i)], b.bending[size_t(j)], la, lb, o) +
+                                 travel_work(la, lb, &a.middle[2 * size_t(i)], &b.middle[2 * size_t(j)], o);
     }
   }
   kink_.resize(size_t(ma) * nb);
@@ -151,12 +158,25 @@ double CorrespondenceSearch::solve(const ChainMeasure& a, const ChainMeasure& b,
         if (c < best) best = c, how = int8_t(Move::kBoth);
       }
       if (i > 0 && (!pinned || step_ok(i - 1, j, i, j))) {
-        const double step = first_[size_t(i - 1)];
+        double step = first_[size_t(i - 1)];
+        if (travel_ > 0) {
+          // Travel of A's segment i−1 to B's anchor j (inline: it depends on both).
+          const double* p = &a.middle[2 * size_t(i - 1)];
+          const double* q = &b.anchor[2 * size_t(banchor(j))];
+          step +=
+              travel_ * 0.5 * a.length[size_t(i - 1)] * ((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]));
+        }
         const double c = cost_[size_t(i - 1) * w + size_t(j)] + step;
         if (c < best - tie(best)) best = c, how = int8_t(Move::kFirst);
       }
       if (j > 0 && (!pinned || step_ok(i, j - 1, i, j))) {
-        const double step = second_[size_t(bseg(j - 1))];
+        double step = second_[size_t(bseg(j - 1))];
+        if (travel_ > 0) {
+          const double* p = &a.anchor[2 * size_t(closed ? i % int(a.kink.size()) : i)];
+          const double* q = &b.middle[2 * size_t(bseg(j - 1))];
+          step += travel_ * 0.5 * b.length[size_t(bseg(j - 1))] *
+                  ((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]));
+        }
         const double c = cost_[size_t(i) * w + size_t(j - 1)] + step;
         if (c < best - tie(best)) best = c, how = int8_t(Move::kSecond);
       }

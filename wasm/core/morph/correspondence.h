@@ -8,10 +8,10 @@
 //   kSecond (i, j) → (i, j+1):   segment j of B grows from A's anchor i.
 // Only knots that already exist are inserted (as in [10]), so a path is a set of knot insertions
 // that gives both B-splines one knot structure. A step costs the stretching and bending work of
-// its segments (eq. 3, 4) plus the kinking work (eq. 5) of the vertex it reaches, where an anchor
-// the step does not advance counts as a straight point (θ = 0): each anchor of A and of B is
-// paid for exactly once, at the vertex where the path first reaches it. The cost of a step then
-// depends only on the step, so the least-work path is a shortest path in a grid DAG: O(m n).
+// its segments (eq. 3, 4, and the travel work of work.h) plus the kinking work (eq. 5) of the vertex it reaches, where
+// an anchor the step does not advance counts as a straight point (θ = 0): each anchor of A and of B is paid for exactly
+// once, at the vertex where the path first reaches it. The cost of a step then depends only on the step, so the
+// least-work path is a shortest path in a grid DAG: O(m n).
 //
 // Closed chains: every cyclic start (B's anchor s matched to A's anchor 0) and, optionally, both
 // directions of B are searched: O(m n²) per direction. For closed chains the vertex (m, n) is
@@ -73,6 +73,7 @@ class CorrespondenceSearch {
   // Scratch, sized on use and kept between calls.
   std::vector<double> cost_, diag_, first_, second_, kink_;
   std::vector<int8_t> step_;
+  double travel_ = 0;
   SearchCounters counters_;
 };
 

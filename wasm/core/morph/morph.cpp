@@ -34,6 +34,33 @@ int nearest_anchor(const KnotChain& c, const Vec2& p, double* d2) {
   return best;
 }
 
+// Centroid and RMS radius of a drawing's curves (sampled 8 times per segment): the frame the
+// travel work compares positions in. A rotation, move or scale of the drawing moves it along.
+Frame frame_of(const SplineSet& s) {
+  double sx = 0, sy = 0, sxx = 0;
+  int count = 0;
+  double seg[8];
+  for (int i = 0; i < s.spline_count(); ++i) {
+    const bool closed = s.closed[size_t(i)] != 0;
+    for (int k = 0; k < spline_segment_count(s.count[size_t(i)], closed); ++k) {
+      spline_segment(s.spline_points(i), s.count[size_t(i)], closed, k, seg);
+      for (int u = 0; u < 8; ++u) {
+        const Vec2 p = bezier_point(seg, u / 8.0);
+        sx += p.x();
+        sy += p.y();
+        sxx += p.squaredNorm();
+        ++count;
+      }
+    }
+  }
+  Frame f;
+  f.cx = sx / count;
+  f.cy = sy / count;
+  f.radius = std::sqrt(std::max(sxx / count - f.cx * f.cx - f.cy * f.cy, 0.0));
+  if (!(f.radius > 0)) f.radius = 1;
+  return f;
+}
+
 }  // namespace
 
 std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOptions& options,
@@ -94,6 +121,7 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
   if (std::string e = chains_of(a, size_a, ca); !e.empty()) return "the first shape, " + e;
   if (std::string e = chains_of(b, size_b, cb); !e.empty()) return "the second shape, " + e;
   const double reference = options.length_unit * 0.5 * (total_length[0] + total_length[1]);
+  const Frame frame_a = frame_of(a), frame_b = frame_of(b);
 
   // 2. Pairing, pulled by pins.
   const std::vector<ContourShape> da = describe_contours(a), db = describe_contours(b);
@@ -134,10 +162,12 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
       const Vec2 p = partner_point(da[size_t(i)], da, box_a, db, box_b, partner_a);
       const KnotChain target = point_chain(p.x(), p.y(), chain_a.segments(), chain_a.closed);
       const std::vector<Move> moves(size_t(chain_a.segments()), Move::kBoth);
-      const ChainMeasure m = measure(chain_a, reference);
+      const ChainMeasure m = measure(chain_a, reference, frame_a);
+      const double q[2] = {(p.x() - frame_b.cx) / frame_b.radius, (p.y() - frame_b.cy) / frame_b.radius};
       for (int k = 0; k < chain_a.segments(); ++k)
         bc.work += stretching_work(m.length[size_t(k)], 0, options.work) +
-                   bending_work(m.bending[size_t(k)], 0, m.length[size_t(k)], 0, options.work);
+                   bending_work(m.bending[size_t(k)], 0, m.length[size_t(k)], 0, options.work) +
+                   travel_work(m.length[size_t(k)], 0, &m.middle[2 * size_t(k)], q, options.work);
       for (double th : m.kink) bc.work += kinking_work(th, 0, options.work);
       blend.build(chain_a, target, moves);
     } else {
@@ -154,8 +184,8 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
           p.a = ((p.a - first) % chain_a.anchors() + chain_a.anchors()) % chain_a.anchors();
       }
       const KnotChain back = reversed(chain_b);
-      const ChainMeasure ma = measure(chain_a, reference), mf = measure(chain_b, reference),
-                         mb = measure(back, reference);
+      const ChainMeasure ma = measure(chain_a, reference, frame_a), mf = measure(chain_b, reference, frame_b),
+                         mb = measure(back, reference, frame_b);
       int directions = CorrespondenceSearch::kBoth;
       if (options.direction == Direction::kForward) directions = CorrespondenceSearch::kForward;
       if (options.direction == Direction::kWinding && chain_a.closed) {
@@ -184,10 +214,12 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
     const KnotChain& chain_b = cb[size_t(j)];
     const Vec2 p = partner_point(db[size_t(j)], db, box_b, da, box_a, partner_b);
     const KnotChain source = point_chain(p.x(), p.y(), chain_b.segments(), chain_b.closed);
-    const ChainMeasure m = measure(chain_b, reference);
+    const ChainMeasure m = measure(chain_b, reference, frame_b);
+    const double q[2] = {(p.x() - frame_a.cx) / frame_a.radius, (p.y() - frame_a.cy) / frame_a.radius};
     for (int k = 0; k < chain_b.segments(); ++k)
       bc.work += stretching_work(0, m.length[size_t(k)], options.work) +
-                 bending_work(0, m.bending[size_t(k)], 0, m.length[size_t(k)], options.work);
+                 bending_work(0, m.bending[size_t(k)], 0, m.length[size_t(k)], options.work) +
+                 travel_work(0, m.length[size_t(k)], q, &m.middle[2 * size_t(k)], options.work);
     for (double th : m.kink) bc.work += kinking_work(0, th, options.work);
     ContourBlend blend;
     blend.build(source, chain_b, std::vector<Move>(size_t(chain_b.segments()), Move::kBoth));

@@ -89,6 +89,7 @@ std::vector<ContourShape> describe_contours(const SplineSet& set, int samples) {
       }
     }
   }
+  for (int s = 0; s < count; ++s) out[size_t(s)].outline = polys[size_t(s)];
   // Nesting: a contour's first point inside another closed contour's polygon.
   for (int s = 0; s < count; ++s) {
     const Vec2 p = vec2_at(set.spline_points(s));
@@ -193,7 +194,36 @@ Vec2 partner_point(const ContourShape& c, const std::vector<ContourShape>& own, 
   }
   const double fw = from[2] - from[0], fh = from[3] - from[1];
   const double u = fw > 0 ? (c.inside.x() - from[0]) / fw : 0.5, v = fh > 0 ? (c.inside.y() - from[1]) / fh : 0.5;
-  return Vec2(to[0] + u * (to[2] - to[0]), to[1] + v * (to[3] - to[1]));
+  const Vec2 mapped(to[0] + u * (to[2] - to[0]), to[1] + v * (to[3] - to[1]));
+  if (c.parent < 0 || partner_of_own[size_t(c.parent)] < 0) return mapped;
+  // The filled region: the parent's partner minus the contours directly inside it.
+  const int region = partner_of_own[size_t(c.parent)];
+  std::vector<const std::vector<double>*> rings = {&other[size_t(region)].outline};
+  for (const ContourShape& o : other)
+    if (o.parent == region) rings.push_back(&o.outline);
+  Vec2 best = mapped;
+  double best_d = std::numeric_limits<double>::infinity();
+  const double* box = other[size_t(region)].box;
+  std::vector<double> xs;
+  for (int row = 1; row < 64; ++row) {
+    const double y = box[1] + (box[3] - box[1]) * row / 64.0;
+    xs.clear();
+    for (const std::vector<double>* r : rings) {
+      const size_t m = r->size() / 2;
+      for (size_t i = 0; i < m; ++i) {
+        const size_t j = (i + 1) % m;
+        const double y0 = (*r)[2 * i + 1], y1 = (*r)[2 * j + 1];
+        if ((y0 <= y) != (y1 <= y)) xs.push_back((*r)[2 * i] + (y - y0) / (y1 - y0) * ((*r)[2 * j] - (*r)[2 * i]));
+      }
+    }
+    std::sort(xs.begin(), xs.end());
+    for (size_t i = 0; i + 1 < xs.size(); i += 2) {
+      const Vec2 mid((xs[i] + xs[i + 1]) / 2, y);
+      const double d = (mid - mapped).norm();
+      if (d < best_d) best_d = d, best = mid;
+    }
+  }
+  return best;
 }
 
 }  // namespace splinekit::morph

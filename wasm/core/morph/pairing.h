@@ -26,6 +26,7 @@ struct ContourShape {
   double box[4] = {0, 0, 0, 0};  // xmin, ymin, xmax, ymax
   int depth = 0;                 // contours of the same drawing that enclose it
   int parent = -1;               // the innermost enclosing contour, or -1
+  std::vector<double> outline;   // the contour sampled as a polygon (x, y pairs)
 };
 
 // Describes every spline of a set (sampled at `samples` points per segment).
@@ -43,7 +44,9 @@ void pair_contours(const std::vector<ContourShape>& a, const double* box_a, cons
                    std::vector<int>& partner_of_b);
 
 // Where a contour without partner grows from / shrinks to in the other drawing: its own inside
-// point mapped from its parent's box to the parent's partner's box (or drawing box to drawing box).
+// point mapped from its parent's box to the parent's partner's box (or drawing box to drawing box),
+// then moved to the nearest middle of a horizontal chord through the filled region of the parent's
+// partner (inside it, outside its holes), so that it starts or ends inside the partner's region.
 Vec2 partner_point(const ContourShape& c, const std::vector<ContourShape>& own, const double* own_box,
                    const std::vector<ContourShape>& other, const double* other_box,
                    const std::vector<int>& partner_of_own);

@@ -32,6 +32,12 @@ double kinking_work(double theta1, double theta2, const WorkOptions& o) {
   return o.kinking * (o.kink_exponent == 1.0 ? d : std::pow(d, o.kink_exponent));
 }
 
+double travel_work(double l1, double l2, const double* p, const double* q, const WorkOptions& o) {
+  if (o.travel == 0) return 0.0;
+  const double dx = p[0] - q[0], dy = p[1] - q[1];
+  return o.travel * 0.5 * (l1 + l2) * (dx * dx + dy * dy);
+}
+
 double turn_angle(const Vec2& u, const Vec2& v) {
   if (u.squaredNorm() == 0 || v.squaredNorm() == 0) return 0.0;
   return std::atan2(cross(u, v), u.dot(v));
@@ -81,12 +87,18 @@ Vec2 direction(const KnotChain& c, int from, int step) {
 
 }  // namespace
 
-ChainMeasure measure(const KnotChain& c, double reference_length) {
+ChainMeasure measure(const KnotChain& c, double reference_length, const Frame& frame) {
   ChainMeasure m;
   const int n = c.segments();
   m.length.resize(size_t(n));
   m.bending.resize(size_t(n));
   m.kink.assign(size_t(c.anchors()), 0.0);
+  m.middle.resize(2 * size_t(n));
+  m.anchor.resize(2 * size_t(c.anchors()));
+  for (int a = 0; a < c.anchors(); ++a) {
+    m.anchor[2 * size_t(a)] = (c.points[6 * size_t(a)] - frame.cx) / frame.radius;
+    m.anchor[2 * size_t(a) + 1] = (c.points[6 * size_t(a) + 1] - frame.cy) / frame.radius;
+  }
   double seg[8];
   for (int k = 0; k < n; ++k) {
     for (int i = 0; i < 4; ++i) {
@@ -96,6 +108,9 @@ ChainMeasure measure(const KnotChain& c, double reference_length) {
     }
     m.length[size_t(k)] = bezier_arc_length(seg, 0.0, 1.0, 1e-9 * reference_length) / reference_length;
     m.bending[size_t(k)] = segment_bending(seg);
+    const Vec2 mid = bezier_point(seg, 0.5);
+    m.middle[2 * size_t(k)] = (mid.x() - frame.cx) / frame.radius;
+    m.middle[2 * size_t(k) + 1] = (mid.y() - frame.cy) / frame.radius;
   }
   for (int a = 0; a < c.anchors(); ++a) {
     if (c.smooth[size_t(a)]) continue;

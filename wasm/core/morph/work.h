@@ -29,6 +29,13 @@ struct WorkOptions {
   double bending = 1.0;        // c_b >= 0
   double kinking = 4.0;        // c_k >= 0
   double kink_exponent = 1.0;  // e_k > 0
+  // Beyond the paper: c_t of the travel work W_t = c_t (L1 + L2)/2 |p̂1 − p̂2|², where p̂ is a
+  // segment's midpoint (or the anchor it collapses to) in its drawing's normalized frame (centroid
+  // at 0, RMS radius 1). Eq. 3–5 only see lengths and angles, so on outlines cut into many similar
+  // segments a path can slide along the other contour almost for free; this keeps corresponding
+  // points at corresponding places. Invariant when both keys move, rotate or scale together; 0
+  // gives the paper's model (where a rotated copy costs nothing).
+  double travel = 1.0;  // c_t >= 0
 };
 
 // Returns "" when every coefficient is finite and in range, else a message naming it.
@@ -39,12 +46,23 @@ double bending_work(double alpha1, double alpha2, double l1, double l2, const Wo
 double kinking_work(double theta1, double theta2, const WorkOptions& o);
 
 // What the work terms read of a chain: per segment its length (in reference units) and bending α,
-// per anchor its kink θ (0 at smooth anchors and at the ends of an open chain).
+// per anchor its kink θ (0 at smooth anchors and at the ends of an open chain); for the travel
+// work, segment midpoints and anchors in the drawing's normalized frame.
 struct ChainMeasure {
   std::vector<double> length;   // n
   std::vector<double> bending;  // n, radians
   std::vector<double> kink;     // anchors, radians in (−π, π]
+  std::vector<double> middle;   // 2n: normalized midpoint (x, y) of each segment (t = 1/2)
+  std::vector<double> anchor;   // 2 * anchors: normalized anchor positions
 };
+
+// A drawing's normalized frame: p̂ = (p − center) / radius.
+struct Frame {
+  double cx = 0, cy = 0, radius = 1;
+};
+
+// Travel work of a segment (length l1, normalized midpoint p) against a point q of length l2.
+double travel_work(double l1, double l2, const double* p, const double* q, const WorkOptions& o);
 
 // Total signed turn of the tangent of one cubic segment (8 doubles), in radians: the angle swept
 // by B'(t) over [0, 1], tracked through `samples` steps (a zero derivative at an end, as when a
@@ -54,7 +72,7 @@ double segment_bending(const double* segment, int samples = 32);
 // Signed angle in (−π, π] from direction u to direction v (0 when either is zero).
 double turn_angle(const Vec2& u, const Vec2& v);
 
-// Measures a chain; lengths are divided by `reference_length`.
-ChainMeasure measure(const KnotChain& chain, double reference_length);
+// Measures a chain; lengths are divided by `reference_length`, positions mapped by `frame`.
+ChainMeasure measure(const KnotChain& chain, double reference_length, const Frame& frame = {});
 
 }  // namespace splinekit::morph
