@@ -172,6 +172,7 @@ export class Morph {
     return this.mode === 1 ? 'intrinsic' : 'linear';
   }
 
+  /** Switches the interpolation of later `at` calls; throws for anything but 'linear' or 'intrinsic'. */
   set interpolation(m: MorphInterpolation) {
     this.mode = Morph.modeOf(m);
   }

@@ -1,5 +1,6 @@
 import type { SvgDocument } from '../../src/index.js';
 import { DocumentMode } from '../modes/document-mode.js';
+import { MorphMode } from '../modes/morph/morph-mode.js';
 import { SkinMode } from '../modes/skin/skin-mode.js';
 import { isMeshFile } from '../modes/surface/mesh-files.js';
 import { SurfaceMode } from '../modes/surface/surface-mode.js';
@@ -37,6 +38,7 @@ export class Editor {
   readonly status: StatusBar;
   readonly panel = new SidePanel();
   readonly skin = new SkinMode();
+  readonly morph = new MorphMode();
   readonly surface = new SurfaceMode();
   samples: Sample[] = [];
   /** What the drop hint says (Surface mode opens meshes). */
@@ -69,6 +71,7 @@ export class Editor {
     this.modes.register(new DocumentMode());
     this.modes.register(this.skin);
     this.modes.register(this.surface);
+    this.modes.register(this.morph);
     this.status.el.prepend(this.surface.statusEl);
 
     this.wire();

@@ -1,4 +1,5 @@
 import { anchorJunction, type ContinuityKind, type MeshPoint } from '../../src/index.js';
+import type { MorphTestState } from '../modes/morph/morph-mode.js';
 import type { SkinTestState } from '../modes/skin/skin-mode.js';
 import type { SurfaceTestState } from '../modes/surface/surface-mode.js';
 import type { Editor } from './editor.js';
@@ -35,6 +36,10 @@ export interface EditorTestHook {
   skinGizmoOnScreen(): { center: { x: number; y: number }; knob: { x: number; y: number }; ring: number } | null;
   /** Surface mode. */
   surface: SurfaceTestHook;
+  /** Morph mode: keys, t, work, pins, a checksum of the in-between. */
+  morph(): MorphTestState;
+  /** Where matched anchor k of the first ('a') or second ('b') morph key is drawn (client pixels), or null. */
+  morphAnchorOnScreen(which: 'a' | 'b', k: number): { x: number; y: number } | null;
 }
 
 /** Surface mode's window for tests (window.splinekitEditor.surface). */
@@ -109,6 +114,13 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
     skinGizmoOnScreen() {
       const g = editor.skin.gizmoOnCanvas();
       return g ? { center: client(...g.center), knob: client(...g.knob), ring: g.ring } : null;
+    },
+    morph() {
+      return editor.morph.testState();
+    },
+    morphAnchorOnScreen(which, k) {
+      const at = editor.morph.anchorOnCanvas(which, k);
+      return at ? client(at[0], at[1]) : null;
     },
     surface: Object.freeze({
       ready: () => editor.surface.ready(),
