@@ -118,6 +118,25 @@ describe('Morph', () => {
     m.dispose();
   });
 
+  test('open paths morph as open paths, ends to ends; an open path never pairs with a closed one', () => {
+    const wave = parseSVG('<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 50C30 0 60 0 80 50C100 100 130 100 160 50"/></svg>');
+    const zigzag = parseSVG('<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 90L40 10L80 90L120 10L160 90"/></svg>');
+    const m = Morph.create(wave, zigzag);
+    expect(m.closed).toEqual([false]);
+    expect((m.counts[0] - 1) % 3).toBe(0);
+    const n = m.counts[0];
+    const at = (t: number) => Array.from(m.at(t));
+    expect(at(0).slice(0, 2)).toEqual([0, 50]);
+    expect(at(0).slice(2 * n - 2)).toEqual([160, 50]);
+    expect(at(1).slice(0, 2)).toEqual([0, 90]);
+    expect(at(1).slice(2 * n - 2)).toEqual([160, 90]);
+    m.dispose();
+    const mixed = Morph.create(wave, [square(0, 0, 100)]);
+    expect(mixed.correspondence.contours.map((c) => [c.contourA, c.contourB])).toEqual([[0, -1], [-1, 0]]);
+    expect(mixed.closed).toEqual([false, true]);
+    mixed.dispose();
+  });
+
   test('a pin holds its points together at both ends', () => {
     const a = [square(0, 0, 100)], b = [square(0, 0, 100)];
     const m = Morph.create(a, b, { pins: [{ a: [100, 0], b: [100, 100] }] });

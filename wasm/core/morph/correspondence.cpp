@@ -102,6 +102,86 @@ void CorrespondenceSearch::tables(const ChainMeasure& a, const ChainMeasure& b, 
     second_[size_t(j)] = stretching_work(0, lb, o) + bending_work(0, b.bending[size_t(j)], 0, lb, o) +
                          kinking_work(0, b.kink[size_t(closed ? (j + 1) % nb : j + 1)], o);
   }
+  if (!closed) return;
+  // Closed chains: whole step costs by (A index, B index), so the banded search reads one number
+  // per step: a diagonal with the kink it reaches, a one-sided step with its travel.
+  both_.resize(size_t(m) * n);
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < n; ++j)
+      both_[size_t(i) * n + j] = diag_[size_t(i) * n + j] + kink_[size_t((i + 1) % ma) * nb + size_t((j + 1) % nb)];
+  first_at_.resize(size_t(m) * nb);
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < nb; ++j)
+      first_at_[size_t(i) * nb + j] = first_[size_t(i)] + travel_work(a.length[size_t(i)], 0, &a.middle[2 * size_t(i)],
+                                                                      &b.anchor[2 * size_t(j)], o);
+  second_at_.resize(size_t(ma) * n);
+  for (int i = 0; i < ma; ++i)
+    for (int j = 0; j < n; ++j)
+      second_at_[size_t(i) * n + j] = second_[size_t(j)] + travel_work(0, b.length[size_t(j)], &a.anchor[2 * size_t(i)],
+                                                                       &b.middle[2 * size_t(j)], o);
+}
+
+double CorrespondenceSearch::solve_band(int m, int n, int start, const std::vector<int>& lo, const std::vector<int>& hi,
+                                        std::vector<int>& path_lo, std::vector<int>& path_hi) {
+  const int ma = m, nb = n;  // closed: as many anchors as segments
+  const size_t w = size_t(n) + 1;
+  cost_.resize((size_t(m) + 1) * w);
+  step_.resize((size_t(m) + 1) * w);
+  row_lo_.resize(size_t(m) + 1);
+  row_hi_.resize(size_t(m) + 1);
+  int64_t cells = 0;
+  for (int i = 0; i <= m; ++i) {
+    const int L = std::max(0, lo[size_t(i)] - start), H = std::min(n, hi[size_t(i)] - start);
+    row_lo_[size_t(i)] = L;
+    row_hi_[size_t(i)] = H;
+    const int pL = i > 0 ? row_lo_[size_t(i - 1)] : 1, pH = i > 0 ? row_hi_[size_t(i - 1)] : 0;
+    double* row = &cost_[size_t(i) * w];
+    const double* prev = i > 0 ? &cost_[size_t(i - 1) * w] : nullptr;
+    int8_t* how_row = &step_[size_t(i) * w];
+    for (int j = L; j <= H; ++j) {
+      ++cells;
+      if (i == 0 && j == 0) {
+        row[0] = 0;
+        how_row[0] = -1;
+        continue;
+      }
+      double best = kInf;
+      int8_t how = -1;
+      const int js = (j - 1 + start) % n;  // B's segment before column j
+      if (i > 0 && j > 0 && j - 1 >= pL && j - 1 <= pH) {
+        const double c = prev[j - 1] + both_[size_t(i - 1) * n + size_t(js)];
+        if (c < best) best = c, how = int8_t(Move::kBoth);
+      }
+      if (i > 0 && j >= pL && j <= pH) {
+        const double c = prev[j] + first_at_[size_t(i - 1) * nb + size_t((j + start) % nb)];
+        if (c < best - tie(best)) best = c, how = int8_t(Move::kFirst);
+      }
+      if (j > L) {
+        const double c = row[j - 1] + second_at_[size_t(i % ma) * n + size_t(js)];
+        if (c < best - tie(best)) best = c, how = int8_t(Move::kSecond);
+      }
+      row[j] = best;
+      how_row[j] = how;
+    }
+  }
+  counters_.cells += cells;
+  counters_.starts += 1;
+  const double total = row_hi_[size_t(m)] == n ? cost_[size_t(m) * w + size_t(n)] : kInf;
+  // The path's columns per row (absolute), the bounds of the starts on either side of this one.
+  path_lo.assign(size_t(m) + 1, std::numeric_limits<int>::max());
+  path_hi.assign(size_t(m) + 1, std::numeric_limits<int>::min());
+  if (std::isfinite(total)) {
+    int i = m, j = n;
+    while (true) {
+      path_lo[size_t(i)] = std::min(path_lo[size_t(i)], j + start);
+      path_hi[size_t(i)] = std::max(path_hi[size_t(i)], j + start);
+      if (i == 0 && j == 0) break;
+      const Move mv = Move(step_[size_t(i) * w + size_t(j)]);
+      if (mv != Move::kSecond) --i;
+      if (mv != Move::kFirst) --j;
+    }
+  }
+  return total;
 }
 
 double CorrespondenceSearch::solve_start(const ChainMeasure& a, const ChainMeasure& b, bool closed, int start,
@@ -215,12 +295,55 @@ Correspondence CorrespondenceSearch::search(const ChainMeasure& a, const ChainMe
       for (AnchorPin& q : p) q.b = reversed_anchor(q.b, nb, closed);
     const int starts = closed ? n : 1;
     tables(a, b, closed, o);
-    for (int s = 0; s < starts; ++s) {
-      const double w = solve(a, b, closed, s, p, nullptr);
-      if (w < best.work - tie(best.work)) {
-        best.work = w;
-        best.start = s;
-        best.reversed = dir == 1;
+    if (closed && p.empty() && n > 1) {
+      // Every start by divide and conquer over starts (Maes 1990): least-work paths of different
+      // starts can be taken not to cross, so the path of start s lies between those of the starts
+      // around it, and each level of the recursion relaxes O(m n) cells: O(m n log n) in all.
+      const int m = int(a.length.size());
+      std::vector<int> full_lo(size_t(m) + 1, 0), full_hi(size_t(m) + 1, 2 * n);
+      std::vector<int> lo0, hi0;
+      auto consider = [&](int s, double w) {
+        if (w < best.work - tie(best.work) ||
+            (std::abs(w - best.work) <= tie(best.work) && best.reversed == (dir == 1) && s < best.start)) {
+          best.work = w;
+          best.start = s;
+          best.reversed = dir == 1;
+        }
+      };
+      consider(0, solve_band(m, n, 0, full_lo, full_hi, lo0, hi0));
+      std::vector<int> lon = lo0, hin = hi0;
+      for (int& v : lon) v += n;
+      for (int& v : hin) v += n;
+      // Explicit stack of (s_lo, s_hi) with the bounds of their paths.
+      struct Range {
+        int s_lo, s_hi;
+        std::vector<int> lo_of_lo, hi_of_hi;
+      };
+      std::vector<Range> stack;
+      stack.push_back({0, n, lo0, hin});
+      std::vector<int> plo, phi;
+      while (!stack.empty()) {
+        Range r = std::move(stack.back());
+        stack.pop_back();
+        if (r.s_hi - r.s_lo <= 1) continue;
+        const int mid = (r.s_lo + r.s_hi) / 2;
+        const double w = solve_band(m, n, mid, r.lo_of_lo, r.hi_of_hi, plo, phi);
+        consider(mid, w);
+        if (!std::isfinite(w)) {
+          // No path inside the band (cannot happen when paths do not cross): fall back to the full grid.
+          consider(mid, solve_band(m, n, mid, full_lo, full_hi, plo, phi));
+        }
+        stack.push_back({r.s_lo, mid, r.lo_of_lo, phi});
+        stack.push_back({mid, r.s_hi, plo, r.hi_of_hi});
+      }
+    } else {
+      for (int s = 0; s < starts; ++s) {
+        const double w = solve(a, b, closed, s, p, nullptr);
+        if (w < best.work - tie(best.work)) {
+          best.work = w;
+          best.start = s;
+          best.reversed = dir == 1;
+        }
       }
     }
   }

@@ -14,7 +14,9 @@
 // least-work path is a shortest path in a grid DAG: O(m n).
 //
 // Closed chains: every cyclic start (B's anchor s matched to A's anchor 0) and, optionally, both
-// directions of B are searched: O(m n²) per direction. For closed chains the vertex (m, n) is
+// directions of B are searched, by divide and conquer over the starts (least-work paths of
+// different starts need not cross, so each bounds the others): O(m n log n) per direction;
+// with pins, start by start, O(m n²). For closed chains the vertex (m, n) is
 // (0, s) again, paid by the step that reaches it like any other: every vertex of the cyclic path is
 // paid by its incoming step, so the work of a closed path does not depend on where it is cut, and
 // the work of A → B equals that of B → A.
@@ -72,7 +74,13 @@ class CorrespondenceSearch {
   void tables(const ChainMeasure& a, const ChainMeasure& b, bool closed, const WorkOptions& options);
   // Scratch, sized on use and kept between calls.
   std::vector<double> cost_, diag_, first_, second_, kink_;
+  // Closed chains, divide and conquer over starts: one start inside column bounds per row
+  // (absolute, unrolled B columns); writes the columns its path visits per row.
+  double solve_band(int m, int n, int start, const std::vector<int>& lo, const std::vector<int>& hi,
+                    std::vector<int>& path_lo, std::vector<int>& path_hi);
   std::vector<int8_t> step_;
+  std::vector<double> both_, first_at_, second_at_;
+  std::vector<int> row_lo_, row_hi_;
   double travel_ = 0;
   SearchCounters counters_;
 };
