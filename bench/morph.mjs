@@ -43,7 +43,10 @@ function contourD(s) {
 function centroid(s) {
   let x = 0, y = 0;
   const n = s.points.length / 2;
-  for (let i = 0; i < n; i++) (x += s.points[2 * i]), (y += s.points[2 * i + 1]);
+  for (let i = 0; i < n; i++) {
+    x += s.points[2 * i];
+    y += s.points[2 * i + 1];
+  }
   return [x / n, y / n];
 }
 
@@ -91,15 +94,13 @@ export function morphBenchmarks(data) {
   for (const c of cases) {
     const a = docs.get(c.a), b = docs.get(c.b);
     const probe = Morph.create(a, b, c.options);
-    // Segments each key is cut into: the matched layout has one segment per step; count each key's own.
-    const segments = probe.correspondence.contours.map((k) => k);
+    // Segments each key is cut into: matched anchors, a key's anchor counted once however many it meets.
     const keySegments = [0, 1].map((w) => {
       const pts = w === 0 ? probe.correspondence.a : probe.correspondence.b;
       let distinct = 0;
       for (let k = 0; k < pts.length; k += 2) if (k === 0 || pts[k] !== pts[k - 2] || pts[k + 1] !== pts[k - 1]) distinct++;
       return distinct;
     });
-    void segments;
     probe.dispose();
     const correspondenceMs = time(() => Morph.create(a, b, c.options).dispose(), 15);
     const m = Morph.create(a, b, c.options);
@@ -136,13 +137,19 @@ export function morphBenchmarks(data) {
           const m = Morph.create(a, b, { interpolation });
           const r = failuresOf((t) => bezierRings(m.at(t).slice(), m.starts, m.counts), (i) => m.correspondence.contours[i].contourA >= 0);
           m.dispose();
-          if (r.frames) (quality[key].pairs++, row[key]++);
+          if (r.frames) {
+            quality[key].pairs++;
+            row[key]++;
+          }
           quality[key].frames += r.frames;
           for (const k of Object.keys(r.kinds)) quality[`${key}_kinds`][k] += r.kinds[k];
         }
         const blend = flubberBlend(a, b);
         const rf = failuresOf(blend, (i) => i < a.splines.length);
-        if (rf.frames) (quality.flubber.pairs++, row.flubber++);
+        if (rf.frames) {
+          quality.flubber.pairs++;
+          row.flubber++;
+        }
         quality.flubber.frames += rf.frames;
         for (const k of Object.keys(rf.kinds)) quality.flubber.kinds[k] += rf.kinds[k];
       }
