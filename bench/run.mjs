@@ -245,7 +245,7 @@ All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${
 
 ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })}
 ${surfaceSection(surface)}
-${morphSection(morph, { date, machine })}
+${morphSection(morph, { date, machine, load: load() })}
 ${editorSection(editor, { date, machine, load: editor.load })}
 ## Memory and size
 
