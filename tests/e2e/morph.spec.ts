@@ -98,7 +98,7 @@ test('loads two shapes, scrubs t, pins an anchor with undo, and exports an anima
   await viewer.close();
 });
 
-test('the set-up comes back after a reload (autosave) and a bad key file leaves the morph as it was', async ({ page }) => {
+test('a glyph of a local font file is a key; the set-up comes back after a reload; a bad key file leaves the morph as it was', async ({ page }) => {
   await openMorph(page);
   await page.getByTestId('morph-key-b').selectOption('ring');
   await page.getByRole('button', { name: 'Intrinsic' }).click();
@@ -116,4 +116,11 @@ test('the set-up comes back after a reload (autosave) and a bad key file leaves 
   await page.getByRole('button', { name: 'Morph', exact: true }).click();
   await page.waitForFunction(() => window.splinekitEditor!.morph().contours > 0);
   expect(await morph(page)).toMatchObject({ keyB: 'ring', interpolation: 'intrinsic', contours: 2 });
+
+  // The "a" of a TrueType font (two contours: the bowl is a hole) blends into the ring.
+  await page.getByTestId('morph-char-a').fill('a');
+  await page.getByTestId('morph-font-a').setInputFiles(sharedData('fonts/LiberationSerif-Bold.ttf'));
+  await page.waitForFunction(() => window.splinekitEditor!.morph().keyA === 'file');
+  expect(await morph(page)).toMatchObject({ keyA: 'file', keyB: 'ring', contours: 2, error: null });
+  await expect(page.getByTestId('morph-key-a').locator('option:checked')).toHaveText(/“a”/);
 });

@@ -5,6 +5,7 @@ import type { Command } from '../../app/history.js';
 import type { Mode, ModeContext } from '../../app/modes.js';
 import type { LoadedDocument } from '../../app/state.js';
 import type { ViewPointer } from '../../view2d/view2d.js';
+import { fontGlyphSVG } from './font-glyph.js';
 import { contoursToD, MorphLayer } from './morph-layer.js';
 import { MorphPanel } from './morph-panel.js';
 import { MORPH_SAMPLES } from './samples.js';
@@ -91,6 +92,7 @@ export class MorphMode implements Mode {
     this.panel = new MorphPanel({
       chooseKey: (which, source) => this.chooseKey(which, { source }),
       openKey: (which, file) => void this.openKey(which, file),
+      openFont: (which, file, char) => void this.openFont(which, file, char),
       setInterpolation: (m) => this.edit(`Interpolation ${m}`, (s) => ({ ...s, interpolation: m })),
       seek: (t, live) => this.seek(t, live),
       togglePlay: () => this.togglePlay(),
@@ -166,6 +168,16 @@ export class MorphMode implements Mode {
       const text = await file.text();
       parseSVG(text, { name: file.name }); // refuse bad files here, keeping the morph as it was
       this.chooseKey(which, { source: 'file', name: file.name, text });
+    } catch (err) {
+      this.ctx?.state.setError(messageOf(err));
+    }
+  }
+
+  private async openFont(which: 'a' | 'b', file: File, char: string): Promise<void> {
+    try {
+      const { name, svg } = fontGlyphSVG(await file.arrayBuffer(), char, file.name);
+      parseSVG(svg, { name });
+      this.chooseKey(which, { source: 'file', name, text: svg });
     } catch (err) {
       this.ctx?.state.setError(messageOf(err));
     }
@@ -361,7 +373,7 @@ export class MorphMode implements Mode {
   }
 
   private name(suffix: string): string {
-    const n = (k: KeyChoice) => (k.source === 'file' ? (k.name ?? 'file').replace(/\.svg$/i, '') : k.source === 'current' ? (this.ctx?.state.current?.file ?? 'drawing').replace(/\.svg$/i, '') : k.source);
+    const n = (k: KeyChoice) => (k.source === 'file' ? (k.name ?? 'file').replace(/\.svg$/i, '').replace(/[^\w.-]+/g, '_') : k.source === 'current' ? (this.ctx?.state.current?.file ?? 'drawing').replace(/\.svg$/i, '') : k.source);
     return derivedName(`${n(this.spec.a)}-to-${n(this.spec.b)}.svg`, suffix);
   }
 

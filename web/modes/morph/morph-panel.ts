@@ -7,6 +7,7 @@ import type { KeyChoice } from './spec.js';
 export interface MorphPanelActions {
   chooseKey(which: 'a' | 'b', source: string): void;
   openKey(which: 'a' | 'b', file: File): void;
+  openFont(which: 'a' | 'b', file: File, char: string): void;
   setInterpolation(m: MorphInterpolation): void;
   seek(t: number, live: boolean): void;
   togglePlay(): void;
@@ -47,7 +48,17 @@ export class MorphPanel {
       });
       const b = noFocusOnClick(h('button', { type: 'button', class: 'small', title: 'Open an SVG file as this key' }, 'Open…'));
       b.addEventListener('click', () => input.click());
-      return h('span', {}, b, input);
+      // A glyph of a local font file: the character typed beside the button.
+      const char = h('input', { type: 'text', value: which === 'a' ? 'G' : 'G', maxlength: 2, size: 2, 'aria-label': 'Character', 'data-testid': `morph-char-${which}`, title: 'The character to take from the font' });
+      const fontInput = h('input', { type: 'file', accept: '.ttf,.otf,.woff,font/ttf,font/otf,font/woff', hidden: true, 'data-testid': `morph-font-${which}` });
+      fontInput.addEventListener('change', () => {
+        const f = fontInput.files?.[0];
+        if (f) actions.openFont(which, f, char.value);
+        fontInput.value = '';
+      });
+      const fb = noFocusOnClick(h('button', { type: 'button', class: 'small', title: 'Take a glyph of a font file (TrueType, OpenType, WOFF) as this key' }, 'Font glyph…'));
+      fb.addEventListener('click', () => fontInput.click());
+      return h('span', {}, b, input, ' ', fb, ' ', char, fontInput);
     };
     const keys = h(
       'div',
