@@ -253,6 +253,20 @@ TEST(Morph, PinsHoldTheirPoints) {
   EXPECT_TRUE(held);
 }
 
+TEST(Morph, ContoursOfZeroLengthAreLeftOutAndIndicesStayTheGivenOnes) {
+  // A lone point ("M x y Z") between two real contours: it draws nothing and is not blended.
+  const SplineSet a = test::set_of({{5, 5, 5, 5, 5, 5}, test::d_shape(4)}, {true, true});
+  const SplineSet b = test::set_of({test::circle(0, 0, 3, 4)}, {true});
+  Morph m;
+  ASSERT_EQ(m.setup(a, b, {}, {}), "");
+  ASSERT_EQ(m.contour_count(), 1);
+  EXPECT_EQ(m.contours()[0].contour_a, 1);
+  EXPECT_EQ(m.contours()[0].contour_b, 0);
+  const SplineSet dots = test::set_of({{5, 5, 5, 5, 5, 5}}, {true});
+  EXPECT_NE(m.setup(dots, b, {}, {}).find("no contour of nonzero length"), std::string::npos);
+  EXPECT_EQ(m.contour_count(), 1);  // the previous morph is kept
+}
+
 TEST(Morph, BadInputIsRefusedWithAMessage) {
   Morph m;
   SplineSet empty;

@@ -61,7 +61,7 @@ std::string chain_from_bezier(const double* points, int point_count, bool closed
   std::vector<double> length(static_cast<size_t>(n));
   double total = 0;
   for (int k = 0; k < n; ++k) total += length[size_t(k)] = segment_length(c, k);
-  if (!(total > options.length_tolerance)) return "a contour has zero length (all its points coincide)";
+  if (!(total > 0)) return "a contour has zero length (all its points coincide)";
   for (int a = 0; a < c.anchors(); ++a) {
     if (!closed && (a == 0 || a == n)) continue;
     const int p = 3 * a;

@@ -63,13 +63,42 @@ Frame frame_of(const SplineSet& s) {
 
 }  // namespace
 
-std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOptions& options,
+std::string Morph::setup(const SplineSet& a_in, const SplineSet& b_in, const MorphOptions& options,
                          const std::vector<MorphPin>& pins) {
-  for (const auto* s : {&a, &b}) {
-    const char* name = s == &a ? "the first shape" : "the second shape";
+  for (const auto* s : {&a_in, &b_in}) {
+    const char* name = s == &a_in ? "the first shape" : "the second shape";
     if (std::string e = validate(*s); !e.empty()) return std::string(name) + ": " + e;
     if (s->spline_count() == 0) return std::string(name) + " has no contour";
     if (total_segments(*s) == 0) return std::string(name) + " has no curve segment";
+  }
+  // Contours of zero length (a lone point, "M x y Z", a segment whose points coincide) draw nothing
+  // and have no shape to blend: they are left out, and the indices reported stay the given ones.
+  SplineSet a, b;
+  std::vector<int> index_a, index_b;
+  for (int which = 0; which < 2; ++which) {  // by position: a and b may be the same set
+    const SplineSet* s = which == 0 ? &a_in : &b_in;
+    SplineSet& out = which == 0 ? a : b;
+    std::vector<int>& index = which == 0 ? index_a : index_b;
+    double box[4];
+    drawing_box(*s, box);
+    const double size = std::hypot(box[2] - box[0], box[3] - box[1]);
+    double seg[8];
+    for (int i = 0; i < s->spline_count(); ++i) {
+      const bool closed = s->closed[size_t(i)] != 0;
+      double length = 0;
+      for (int k = 0; k < spline_segment_count(s->count[size_t(i)], closed); ++k) {
+        spline_segment(s->spline_points(i), s->count[size_t(i)], closed, k, seg);
+        length += bezier_arc_length(seg, 0.0, 1.0, 1e-12 * size);
+      }
+      if (!(length > 1e-9 * size)) continue;
+      index.push_back(i);
+      out.start.push_back(int32_t(out.points.size() / 2));
+      out.count.push_back(s->count[size_t(i)]);
+      out.closed.push_back(s->closed[size_t(i)]);
+      out.points.insert(out.points.end(), s->spline_points(i), s->spline_points(i) + 2 * size_t(s->count[size_t(i)]));
+    }
+    if (out.spline_count() == 0)
+      return std::string(which == 0 ? "the first shape" : "the second shape") + " has no contour of nonzero length";
   }
   if (std::string e = validate(options.work); !e.empty()) return e;
   if (!std::isfinite(options.segment_limit) || options.segment_limit < 0)
@@ -228,6 +257,10 @@ std::string Morph::setup(const SplineSet& a, const SplineSet& b, const MorphOpti
     info.push_back(bc);
   }
 
+  for (BlendedContour& bc : info) {
+    if (bc.contour_a >= 0) bc.contour_a = index_a[size_t(bc.contour_a)];
+    if (bc.contour_b >= 0) bc.contour_b = index_b[size_t(bc.contour_b)];
+  }
   blends_ = std::move(blends);
   info_ = std::move(info);
   work_ = total;

@@ -62,9 +62,9 @@ struct BlendedContour {
 class Morph {
  public:
   // ---- Precompute -------------------------------------------------------------------------------
-  // Validates both sets (at least one spline each, finite, well formed) and the options, pairs
-  // contours, finds each pair's least-work correspondence and prepares the blends. Returns "" or a
-  // message naming the problem; on failure the previous morph is kept.
+  // Validates both sets (at least one spline each, finite, well formed) and the options, leaves
+  // out contours of zero length (they draw nothing), pairs contours, finds each pair's least-work correspondence and
+  // prepares the blends. Returns "" or a message naming the problem; on failure the previous morph is kept.
   std::string setup(const SplineSet& a, const SplineSet& b, const MorphOptions& options,
                     const std::vector<MorphPin>& pins);
 

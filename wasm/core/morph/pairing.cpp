@@ -96,6 +96,8 @@ std::vector<ContourShape> describe_contours(const SplineSet& set, int samples) {
     double smallest = kInf;
     for (int o = 0; o < count; ++o) {
       if (o == s || !out[size_t(o)].closed) continue;
+      const double* b = out[size_t(o)].box;
+      if (p.x() < b[0] || p.x() > b[2] || p.y() < b[1] || p.y() > b[3]) continue;  // cheap reject
       if (winding(polys[size_t(o)], p) != 0) {
         ++out[size_t(s)].depth;
         if (std::abs(out[size_t(o)].area) < smallest) {
@@ -157,18 +159,19 @@ void pair_contours(const std::vector<ContourShape>& a, const double* box_a, cons
       std::reverse(perm.begin() + small, perm.end());
     } while (std::next_permutation(perm.begin(), perm.end()));
   } else {
+    // Greedy: the cheapest remaining pair first (all pairs sorted once, O(n² log n)).
+    std::vector<std::pair<double, int64_t>> order;
+    order.reserve(size_t(small) * size_t(large));
+    for (int s = 0; s < small; ++s)
+      for (int l = 0; l < large; ++l)
+        if (std::isfinite(c(s, l))) order.push_back({c(s, l), int64_t(s) * large + l});
+    std::sort(order.begin(), order.end());
     std::vector<uint8_t> used(size_t(large), 0);
-    for (int round = 0; round < small; ++round) {
-      double bv = kInf;
-      int bs = -1, bl = -1;
-      for (int s = 0; s < small; ++s) {
-        if (best[size_t(s)] >= 0) continue;
-        for (int l = 0; l < large; ++l)
-          if (!used[size_t(l)] && c(s, l) < bv) bv = c(s, l), bs = s, bl = l;
-      }
-      if (bs < 0) break;
-      best[size_t(bs)] = bl;
-      used[size_t(bl)] = 1;
+    for (const auto& [cost_sl, sl] : order) {
+      const int s = int(sl / large), l = int(sl % large);
+      if (best[size_t(s)] >= 0 || used[size_t(l)]) continue;
+      best[size_t(s)] = l;
+      used[size_t(l)] = 1;
     }
   }
   for (int s = 0; s < small; ++s) {
