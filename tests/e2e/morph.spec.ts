@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.js';
-import { frames, openEditor, sharedData } from './helpers.js';
+import { docsScreenshot, frames, openEditor, sharedData } from './helpers.js';
 
 /**
  * Morph mode end to end: two keys (the mode's own sample and a glyph from the shared data opened
@@ -35,9 +35,17 @@ test('loads two shapes, scrubs t, pins an anchor with undo, and exports an anima
   const glyph = await morph(page);
   expect(glyph.error).toBeNull();
   expect(glyph.work).not.toBe(start.work);
+  // and the Courier-like G as the first: the two keys of Fig. 7.
+  await page.getByTestId('morph-open-a').setInputFiles(sharedData('svg/morph/NimbusMonoPS-Bold_G.svg'));
+  await page.waitForFunction(() => window.splinekitEditor!.morph().keyA === 'file');
+  expect(await morph(page)).toMatchObject({ error: null, contours: 1 });
 
   // Scrubbing t changes the in-between; t = 0 and t = 1 differ.
   const slider = page.getByTestId('morph-slider');
+  await slider.fill('400');
+  await page.waitForFunction(() => window.splinekitEditor!.morph().t === 0.4);
+  await frames(page);
+  await docsScreenshot(page, 'morph.png');
   await slider.fill('0');
   await page.waitForFunction(() => window.splinekitEditor!.morph().t === 0);
   const at0 = (await morph(page)).checksum;
@@ -83,7 +91,7 @@ test('loads two shapes, scrubs t, pins an anchor with undo, and exports an anima
 
   // The animated SVG plays as an image, where no script runs.
   const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('morph-export-animated').click()]);
-  expect(download.suggestedFilename()).toBe('blob-to-NimbusRoman-Bold_G-animated.svg');
+  expect(download.suggestedFilename()).toBe('NimbusMonoPS-Bold_G-to-NimbusRoman-Bold_G-animated.svg');
   const file = testInfo.outputPath('morph-animated.svg');
   await download.saveAs(file);
   const svg = readFileSync(file, 'utf8');
