@@ -16,6 +16,7 @@ import { editBenchmarks, editSection } from './edit.mjs';
 import { editorBenchmarks, editorSection } from './editor.mjs';
 import { dragBenchmarks, dragSection } from './editor-drag.mjs';
 import { fidelityFigures, fidelitySection } from './fidelity.mjs';
+import { morphBenchmarks, morphSection } from './morph.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
 
@@ -57,6 +58,7 @@ const sections = {
   'editor-drag': { key: 'editor_drag', heading: '## Dragging in the editor (Chromium)', before: '## Memory and size', run: () => dragBenchmarks(root, data, { log: console.log }), markdown: dragSection },
   edit: { key: 'edit', heading: '## Edit (', before: '## Memory and size', run: () => editBenchmarks(), markdown: editSection },
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
+  morph: { key: 'morph', heading: '## Morph', before: '## Editor (Chromium)', run: () => morphBenchmarks(data), markdown: morphSection },
 };
 
 /**
@@ -174,8 +176,12 @@ console.log(`edit: ${JSON.stringify(edit)}`);
 // ---- surface (b/Surf) -------------------------------------------------------------------------
 const surface = await surfaceBenchmarks(root, data, { log: console.log });
 
+// ---- morph (Sederberg & Greenwood) vs flubber ---------------------------------------------------
+const morph = morphBenchmarks(data);
+console.log(`morph: ${JSON.stringify(morph.speed)}`);
+
 // ---- report -----------------------------------------------------------------------------------
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, editor_drag: drag, fidelity, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, morph, editor_drag: drag, fidelity, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -251,6 +257,7 @@ All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${
 
 ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })}
 ${surfaceSection(surface)}
+${morphSection(morph, { date, machine, load: load() })}
 ${editorSection(editor, { date, machine, load: editor.load })}
 ${dragSection(drag, { date, machine, load: drag.load })}
 ${fidelitySection(fidelity, { date, machine })}

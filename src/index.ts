@@ -95,3 +95,6 @@ export {
   type StrokeSample,
 } from './edit/catmull-rom.js';
 export { LocalEdit, DEFAULT_EDIT_OPTIONS, FALLOFFS, type ActiveWindowInfo, type Falloff, type LocalEditOptions } from './edit/local-edit.js';
+export { Morph, type MorphContour, type MorphCorrespondence, type MorphKey } from './morph/morph.js';
+export { MORPH_INTERPOLATIONS, type MorphDirection, type MorphInterpolation, type MorphOptions, type MorphPin } from './morph/options.js';
+export type { MorphAnimationOptions, MorphStyle } from './morph/svg-out.js';

@@ -9,10 +9,11 @@ import { init } from '../index.js';
 import { UsageError, type Command } from './common.js';
 import { edit } from './edit.js';
 import { info } from './info.js';
+import { morph } from './morph.js';
 import { skin } from './skin.js';
 import { geodesic, trace } from './surface.js';
 
-const COMMANDS: Record<string, Command> = { info, skin, geodesic, trace, edit };
+const COMMANDS: Record<string, Command> = { info, skin, geodesic, trace, edit, morph };
 
 function help(): string {
   const lines = ['usage: splinekit <command> [options]', '', 'commands:'];

@@ -98,9 +98,29 @@ export interface SurfaceMeshHandle extends EmbindObject {
   mapPoints(f: number, u: number, v: number, ux: number, uy: number, uz: number, rotation: number, scale: number): number;
 }
 
+/** wasm/bindings/morph_bindings.cpp — MorphHandle (see the flow comment there). Status 0 = ok, else see error(). */
+export interface MorphHandle extends EmbindObject {
+  resizePins(n: number): void;
+  pins(): Float64Array;
+  setup(a: SplineSetHandle, b: SplineSetHandle, stretching: number, bending: number, kinking: number, kinkExponent: number, segmentLimit: number, continuityTolerance: number, lengthUnit: number, travel: number, direction: number): number;
+  evaluate(t: number, mode: number): number;
+  points(): Float64Array;
+  starts(): Int32Array;
+  counts(): Int32Array;
+  closed(): Int32Array;
+  coupled(): Int32Array;
+  contours(): Float64Array;
+  contourCount(): number;
+  pointCount(): number;
+  work(): number;
+  cells(): number;
+  error(): string;
+}
+
 export interface SplinekitCoreModule {
   CatmullRomHandle: { new (): CatmullRomHandle };
   LocalEditHandle: { new (): LocalEditHandle };
+  MorphHandle: { new (): MorphHandle };
   SurfaceMeshHandle: { new (): SurfaceMeshHandle };
   SkinRigHandle: { new (): SkinRigHandle };
   SplineSetHandle: { new (): SplineSetHandle };

@@ -12,6 +12,7 @@ import { cubicAt } from './helpers.js';
 import { info } from '../../src/cli/info.js';
 import { skin } from '../../src/cli/skin.js';
 import { geodesic, trace } from '../../src/cli/surface.js';
+import { morph } from '../../src/cli/morph.js';
 
 const dir = mkdtempSync(join(tmpdir(), 'splinekit-cli-in-process-'));
 beforeAll(async () => {
@@ -130,5 +131,67 @@ describe('geodesic and trace', () => {
     }
     await expect(trace.run([square()])).rejects.toBeInstanceOf(UsageError);
     await expect(geodesic.run([])).rejects.toBeInstanceOf(UsageError);
+  });
+});
+
+describe('morph', () => {
+  // A square and a diamond of the same size: one closed contour each, all corners.
+  const squareSvg = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100"><path d="M10 10 H90 V90 H10 Z"/></svg>';
+  const diamondSvg = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100"><path d="M50 0 L100 50 L50 100 L0 50 Z"/></svg>';
+
+  test('--json - writes N frames at t = i/(N-1) in the info schema, the work and the timings', async () => {
+    const { log, stdout } = await run(morph, [write('sq.svg', squareSvg), write('di.svg', diamondSvg), '--frames', '5', '--json', '-']);
+    expect(log).toBe('');
+    const json = JSON.parse(stdout);
+    expect(json.frames.map((f: { t: number }) => f.t)).toEqual([0, 0.25, 0.5, 0.75, 1]);
+    expect(json.work).toBeGreaterThan(0);
+    expect(json.stats.correspondence_ms).toBeGreaterThan(0);
+    expect(json.stats.frame_ms).toBeGreaterThanOrEqual(0);
+    for (const frame of json.frames) {
+      expect(frame.splines).toHaveLength(1);
+      const s = frame.splines[0];
+      expect(s.closed).toBe(true);
+      expect(s.points.length % 3).toBe(0);
+      expect(s.continuity).toHaveLength(s.points.length / 3);
+    }
+    // The first frame is the square: its corners are among its anchors, all points on its sides.
+    const first = json.frames[0].splines[0].points as [number, number][];
+    for (const [x, y] of first) expect(Math.min(Math.abs(x - 10), Math.abs(x - 90), Math.abs(y - 10), Math.abs(y - 90))).toBeLessThan(1e-9);
+    const last = json.frames[4].splines[0].points as [number, number][];
+    for (const [x, y] of last) expect(Math.abs(Math.abs(x - 50) + Math.abs(y - 50) - 50)).toBeLessThan(1e-9);
+  });
+
+  test('default 11 frames; --out-dir writes one SVG per frame that reads back', async () => {
+    const out = join(dir, 'frames');
+    const { log } = await run(morph, [write('sq.svg', squareSvg), write('di.svg', diamondSvg), '--out-dir', out, '--json', join(dir, 'm.json'), '--interpolation', 'intrinsic']);
+    expect(log).toContain('sq.svg → di.svg: 1 contours');
+    const json = JSON.parse(readFileSync(join(dir, 'm.json'), 'utf8'));
+    expect(json.frames).toHaveLength(11);
+    const svg = readFileSync(join(out, 'frame-005.svg'), 'utf8');
+    expect(svg).toContain('<path');
+    expect(readFileSync(join(out, 'frame-010.svg'), 'utf8')).toContain('fill-rule="nonzero"');
+  });
+
+  test('--pins holds the given points together', async () => {
+    const pins = write('pins.json', JSON.stringify({ pins: [{ a: [90, 10], b: [50, 100] }] }));
+    const { stdout } = await run(morph, [write('sq.svg', squareSvg), write('di.svg', diamondSvg), '--frames', '2', '--pins', pins, '--json', '-']);
+    const json = JSON.parse(stdout);
+    const a = json.frames[0].splines[0].points as [number, number][], b = json.frames[1].splines[0].points as [number, number][];
+    expect(a.some(([x, y], i) => x === 90 && y === 10 && b[i][0] === 50 && b[i][1] === 100)).toBe(true);
+  });
+
+  test('bad usage throws UsageError, bad or empty input a SplinekitError naming it', async () => {
+    const sq = write('sq.svg', squareSvg);
+    await expect(morph.run([sq])).rejects.toBeInstanceOf(UsageError);
+    await expect(morph.run([sq, sq, '--frames', '1'])).rejects.toBeInstanceOf(UsageError);
+    await expect(morph.run([sq, sq, '--frames', 'x'])).rejects.toBeInstanceOf(UsageError);
+    await expect(morph.run([sq, sq, '--interpolation', 'cubic'])).rejects.toBeInstanceOf(UsageError);
+    const empty = write('empty.svg', '<svg xmlns="http://www.w3.org/2000/svg"><text>t</text></svg>');
+    await expect(morph.run([empty, sq])).rejects.toThrow(/empty.svg: no path or shape to morph/);
+    await expect(morph.run([sq, write('bad.svg', '<svg><path d="M0 0 L"/>')])).rejects.toBeInstanceOf(SplinekitError);
+    await expect(morph.run([sq, join(dir, 'missing.svg')])).rejects.toMatchObject({ code: 'invalid-input' });
+    const dot = write('dot.svg', '<svg xmlns="http://www.w3.org/2000/svg"><path d="M5 5 L5 5 L5 5 Z"/></svg>');
+    await expect(morph.run([dot, sq])).rejects.toThrow(/zero/);
+    await expect(morph.run([sq, sq, '--pins', write('p.json', '{"pins":[{"a":[1]}]}')])).rejects.toThrow(/pin 0/);
   });
 });

@@ -1,6 +1,7 @@
 import type { SvgDocument } from '../../src/index.js';
 import { DocumentMode } from '../modes/document-mode.js';
 import { EditMode } from '../modes/edit/edit-mode.js';
+import { MorphMode } from '../modes/morph/morph-mode.js';
 import { SkinMode } from '../modes/skin/skin-mode.js';
 import { isMeshFile } from '../modes/surface/mesh-files.js';
 import { SurfaceMode } from '../modes/surface/surface-mode.js';
@@ -38,6 +39,7 @@ export class Editor {
   readonly status: StatusBar;
   readonly panel = new SidePanel();
   readonly skin = new SkinMode();
+  readonly morph = new MorphMode();
   readonly surface = new SurfaceMode();
   readonly edit = new EditMode();
   samples: Sample[] = [];
@@ -71,6 +73,7 @@ export class Editor {
     this.modes.register(new DocumentMode());
     this.modes.register(this.skin);
     this.modes.register(this.surface);
+    this.modes.register(this.morph);
     this.modes.register(this.edit);
     this.status.el.prepend(this.surface.statusEl);
 

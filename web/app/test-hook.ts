@@ -1,5 +1,6 @@
 import { anchorJunction, type ContinuityKind, type MeshPoint } from '../../src/index.js';
 import type { EditTestState } from '../modes/edit/edit-mode.js';
+import type { MorphTestState } from '../modes/morph/morph-mode.js';
 import type { SkinTestState } from '../modes/skin/skin-mode.js';
 import type { SurfaceTestState } from '../modes/surface/surface-mode.js';
 import type { Editor } from './editor.js';
@@ -49,6 +50,10 @@ export interface EditorTestHook {
   editPointOnScreen(curve: number, point: number): { x: number; y: number } | null;
   /** Where the active window's left or right end is drawn (client pixels), or null. */
   editWindowEndOnScreen(side: 'left' | 'right'): { x: number; y: number } | null;
+  /** Morph mode: keys, t, work, pins, a checksum of the in-between. */
+  morph(): MorphTestState;
+  /** Where matched anchor k of the first ('a') or second ('b') morph key is drawn (client pixels), or null. */
+  morphAnchorOnScreen(which: 'a' | 'b', k: number): { x: number; y: number } | null;
 }
 
 /** Surface mode's window for tests (window.splinekitEditor.surface). */
@@ -142,6 +147,13 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
     },
     editWindowEndOnScreen(side) {
       const at = editor.edit.windowEndOnCanvas(side);
+      return at ? client(at[0], at[1]) : null;
+    },
+    morph() {
+      return editor.morph.testState();
+    },
+    morphAnchorOnScreen(which, k) {
+      const at = editor.morph.anchorOnCanvas(which, k);
       return at ? client(at[0], at[1]) : null;
     },
     surface: Object.freeze({
