@@ -67,7 +67,9 @@ export class View2D {
 
   constructor(readonly container: HTMLElement) {
     this.drawing = new SvgLayer(container);
-    this.renderer = new WebGLRenderer({ antialias: false, alpha: true, preserveDrawingBuffer: true, powerPreference: 'high-performance' });
+    // No multisampling (the overlays smooth their own edges) and no preserved buffer: both cost a
+    // full-canvas pass per frame with software WebGL, which is what many machines have.
+    this.renderer = new WebGLRenderer({ antialias: false, alpha: true, powerPreference: 'high-performance' });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.renderer.setClearColor(0x000000, 0);
     const canvas = this.renderer.domElement;
@@ -186,6 +188,7 @@ export class View2D {
   }
 
   private resize(): void {
+    this.canvasRect = null;
     const w = this.container.clientWidth, h = this.container.clientHeight;
     if (w === 0 || h === 0) return;
     const first = this.viewport.width <= 1;
@@ -195,8 +198,14 @@ export class View2D {
     this.viewChanged();
   }
 
+  /**
+   * The canvas's place on the page, read when a gesture starts and after a resize: reading it on
+   * every move would lay out the drawing the last frame changed before the move is handled.
+   */
+  private canvasRect: DOMRect | null = null;
+
   private pointer(e: PointerEvent | MouseEvent): ViewPointer {
-    const r = this.canvas.getBoundingClientRect();
+    const r = (this.canvasRect ??= this.canvas.getBoundingClientRect());
     const sx = e.clientX - r.left, sy = e.clientY - r.top;
     const [x, y] = this.viewport.toDoc(sx, sy);
     return { sx, sy, x, y, button: e.button, shiftKey: e.shiftKey, altKey: e.altKey, modKey: e.ctrlKey || e.metaKey };
@@ -205,6 +214,7 @@ export class View2D {
   private listen(canvas: HTMLCanvasElement): void {
     canvas.addEventListener('pointerdown', (e) => {
       if (this.drag) return;
+      this.canvasRect = null;
       canvas.focus({ preventScroll: true });
       if (e.button > 1) return; // the right button's context menu stays the browser's
       const p = this.pointer(e);
@@ -275,6 +285,7 @@ export class View2D {
         this.updateCursor();
       }
     });
+    window.addEventListener('scroll', () => (this.canvasRect = null), { capture: true, passive: true });
     window.addEventListener('blur', () => {
       this.spaceDown = false;
       this.updateCursor();

@@ -1,10 +1,9 @@
-import { Group } from 'three';
 import { segmentCount, type SvgDocument } from '../../../src/index.js';
 import { cubicPointInto } from '../../view2d/cubic.js';
 import { flattenSpline } from '../../view2d/tessellate.js';
+import { LineCanvas, LineLayer } from '../../view2d/line-canvas.js';
 import type { View2D } from '../../view2d/view2d.js';
 import { HEAT, Ramp, SKIN_COLORS, WEIGHT } from './colors.js';
-import { Ribbons } from './ribbons.js';
 
 /** A position per curve sample (samples `perCurve` per curve, curve order), evaluated on demand. */
 export type SampleField = (k: number, out: Float32Array, o: number) => void;
@@ -64,16 +63,22 @@ function sampleSegments(doc: SvgDocument, perCurve: number, scale: number, at: S
   }
   const segments = new Float32Array(total * 4), colors = new Float32Array(total * 6);
   let seg = 0;
+  let xy = new Float32Array(0);
   doc.splines.forEach((s, i) => {
     const line = picks[i], m = line.length;
     if (m < 2) return;
+    // Each picked point once, then the segments between consecutive ones.
+    if (xy.length < 2 * m) xy = new Float32Array(2 * m);
+    for (let j = 0; j < m; j++) at(line[j], xy, 2 * j);
     const count = s.closed ? m : m - 1;
     for (let j = 0; j < count; j++) {
-      const a = line[j], b = line[(j + 1) % m];
-      at(a, segments, 4 * seg);
-      at(b, segments, 4 * seg + 2);
-      color(Math.floor(a / perCurve), a, colors, 6 * seg);
-      color(Math.floor(b / perCurve), b, colors, 6 * seg + 3);
+      const a = j, b = (j + 1) % m;
+      segments[4 * seg] = xy[2 * a];
+      segments[4 * seg + 1] = xy[2 * a + 1];
+      segments[4 * seg + 2] = xy[2 * b];
+      segments[4 * seg + 3] = xy[2 * b + 1];
+      color(Math.floor(line[a] / perCurve), line[a], colors, 6 * seg);
+      color(Math.floor(line[b] / perCurve), line[b], colors, 6 * seg + 3);
       seg++;
     }
   });
@@ -105,31 +110,29 @@ function rgb(hex: string): Float32Array {
 }
 
 /**
- * Skin mode's curves over the drawing, as ribbons of constant screen width: the target (dashed,
+ * Skin mode's curves over the drawing, as lines of constant screen width on a 2D canvas: the target (dashed,
  * optionally colored by the per-curve error, red at the maximum … purple at the minimum, as in the
  * paper, here on the scale of RMS distance), the naive baseline's outline, and the selected handle's weight field along the curves.
  */
 export class CurveLayers {
-  readonly group = new Group();
-  private readonly field = new Ribbons(5, null, 50);
-  private readonly naive = new Ribbons(1.75, null, 51);
-  private readonly target = new Ribbons(1.75, { dash: 7, gap: 5 }, 52);
+  private readonly field = new LineLayer(5, null);
+  private readonly naive = new LineLayer(1.75, null);
+  private readonly target = new LineLayer(1, { dash: 7, gap: 5 });
+  private readonly canvas: LineCanvas;
   /** What is drawn, to draw it again when the zoom changes enough to want other sample counts. */
   private data: CurveLayerData | null = null;
   /** The zoom (log2 of the scale, rounded down) the samples were picked for. */
   private zoomLevel = NaN;
 
   constructor(private readonly view: View2D) {
-    for (const r of [this.field, this.naive, this.target]) this.group.add(r.mesh);
-    this.group.name = 'skin-curves';
-    view.overlayLayer.add(this.group);
+    this.canvas = new LineCanvas(view, [this.field, this.naive, this.target]);
     this.viewChanged();
   }
 
-  /** Keeps line widths in pixels and dashes a constant length on screen. */
+  /** Draws the lines for the new view (and picks other samples when the zoom changed enough). */
   viewChanged(): void {
-    for (const r of [this.field, this.naive, this.target]) r.setScale(this.view.viewport.scale);
     if (this.data && Math.floor(Math.log2(this.view.viewport.scale)) !== this.zoomLevel) this.update(this.data);
+    else this.canvas.draw();
   }
 
   update(data: CurveLayerData | null): void {
@@ -138,7 +141,7 @@ export class CurveLayers {
     this.setTarget(data);
     this.setNaive(data);
     this.setField(data);
-    this.view.requestRender();
+    this.canvas.draw();
   }
 
   /** The scale samples are picked for: the top of the current zoom level's range. */
@@ -193,7 +196,6 @@ export class CurveLayers {
   }
 
   dispose(): void {
-    for (const r of [this.field, this.naive, this.target]) r.dispose();
-    this.group.removeFromParent();
+    this.canvas.dispose();
   }
 }

@@ -228,16 +228,16 @@ export class SkinSession {
     const built = this.built;
     if (!built || !this._points) return null;
     const { rest, weights } = this.weightsOf(built);
-    const n = built.ids.length, T = this.transformsFor(built);
+    const n = built.ids.length, T = Float64Array.from(this.transformsFor(built).flat());
     return (k, out, o) => {
       const x = rest[2 * k], y = rest[2 * k + 1];
       let tx = 0, ty = 0;
       for (let i = 0; i < n; i++) {
         const w = weights[k * n + i];
         if (w === 0) continue;
-        const m = T[i];
-        tx += w * (m[0] * x + m[2] * y + m[4]);
-        ty += w * (m[1] * x + m[3] * y + m[5]);
+        const m = 6 * i;
+        tx += w * (T[m] * x + T[m + 2] * y + T[m + 4]);
+        ty += w * (T[m + 1] * x + T[m + 3] * y + T[m + 5]);
       }
       out[o] = tx;
       out[o + 1] = ty;
