@@ -1,7 +1,7 @@
 import { XMLSerializer } from '@xmldom/xmldom';
 import { SplinekitError } from '../core/errors.js';
 import { cloneSpline, segmentCount, type ContinuityKind, type Spline } from '../spline/spline.js';
-import { invert, isIdentity, transformPoints, type Matrix } from './matrix.js';
+import { IDENTITY, invert, isIdentity, transformPoints, type Matrix } from './matrix.js';
 import { findById, fitAffine, paintFollower, splineBounds } from './paint-follow.js';
 import { formatNumber, splinesToPathData } from './path-data.js';
 import type { ResolvedStyle } from './style.js';
@@ -210,7 +210,7 @@ export class SvgDocument {
 
   /**
    * A CSS color to paint `paint` with: itself for a color, a gradient's middle stop for
-   * `url(#gradient)` (the model keeps gradients as they are; this is a stand-in for previews),
+   * `url(#gradient)` (one colour standing in for it, e.g. for a thumbnail or a legend),
    * or null for 'none' and unresolvable references.
    */
   paintColor(paint: string): string | null {
@@ -271,8 +271,32 @@ export class SvgDocument {
    */
   private followPaints(i: number, root: Element, el: Element): void {
     const m = this.paintTransform(i);
-    if (!m) return;
-    for (const follow of paintFollowers(this, i, root, el)) follow(m);
+    if (m) this.paintFollower(i, root, el)?.(m);
+  }
+
+  /**
+   * Gives shape i (its element `el`, under `root`, in markup written by `toSVG`) its own copies of
+   * the gradients and patterns it is painted with, and returns the function that sets the map they
+   * follow (`paintTransform` of a version of this document; null for none); null when its paint
+   * cannot follow (a colour, or a pattern in bounding-box units). For pages that keep the markup
+   * live (as the editor does).
+   */
+  paintFollower(i: number, root: Element, el: Element): ((m: Matrix | null) => void) | null {
+    const follow: ((m: Matrix) => void)[] = [];
+    for (const which of ['fill', 'stroke'] as const) {
+      const f = paintFollower(root, el, String(i), which, this.shapes[i].style[which], () => this.importedBounds(i));
+      if (f) follow.push(f);
+    }
+    return follow.length === 0 ? null : (m) => follow.forEach((f) => f(m ?? IDENTITY));
+  }
+
+  /**
+   * The `d` of shape i's element: its splines in the element's own user space, numbers written by
+   * `format` (12 significant digits by default); null when the element's transform is singular.
+   */
+  pathData(i: number, format?: (v: number) => string): string | null {
+    const toLocal = invert(this.shapes[i].transform);
+    return toLocal ? splinesToPathData(this.splinesOf(i), isIdentity(toLocal) ? undefined : toLocal, format) : null;
   }
 
   /** Shape i's bounds [x, y, w, h] as imported, in its element's user space, or null. */
@@ -408,19 +432,6 @@ export class SvgDocument {
     });
     return { out, elements };
   }
-}
-
-/**
- * The functions that make the gradients and user-space patterns painting shape `i` of `doc`
- * (element `el` under `root`) follow a map of its user space: one per followed paint, fill first.
- */
-export function paintFollowers(doc: SvgDocument, i: number, root: Element, el: Element): ((m: Matrix) => void)[] {
-  const out: ((m: Matrix) => void)[] = [];
-  for (const which of ['fill', 'stroke'] as const) {
-    const follow = paintFollower(root, el, String(i), which, doc.shapes[i].style[which], () => doc.importedBounds(i));
-    if (follow) out.push(follow);
-  }
-  return out;
 }
 
 function serialize(out: Document): string {

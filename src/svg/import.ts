@@ -392,7 +392,7 @@ class Builder {
       if (v && v !== 'none') this.warn(`ref:${attr}`, (n) => `${n} shape${n > 1 ? 's' : ''} use${n > 1 ? '' : 's'} ${attr}: kept as it is, not deformed with the splines`);
     }
     if (resolved.fill.startsWith('url(') || resolved.stroke.startsWith('url(')) {
-      this.warn('paint-server', (n) => `${n} shape${n > 1 ? 's are' : ' is'} painted with a gradient or pattern: kept as it is (not deformed); previews use a solid stand-in color`);
+      this.warn('paint-server', (n) => `${n} shape${n > 1 ? 's are' : ' is'} painted with a gradient or pattern: a deformed shape gets its own copy that follows it (the affine map closest to its deformation)`);
     }
     for (const r of raw) transformPoints(ctm, r.points);
     if (!raw.every((r) => r.points.every(Number.isFinite))) {

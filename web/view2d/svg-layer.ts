@@ -1,8 +1,5 @@
 import DOMPurify from 'dompurify';
-import { SHAPE_ATTRIBUTE, type SvgDocument } from '../../src/index.js';
-import { paintFollowers } from '../../src/svg/document.js';
-import { IDENTITY, invert, isIdentity, type Matrix } from '../../src/svg/matrix.js';
-import { splinesToPathData } from '../../src/svg/path-data.js';
+import { SHAPE_ATTRIBUTE, type Matrix, type SvgDocument } from '../../src/index.js';
 import type { Viewport } from './viewport.js';
 
 /** A shape the drawing left out (its element stays in the markup, drawn as the file has it or not at all). */
@@ -28,11 +25,10 @@ export interface DrawingStats {
 interface Target {
   el: Element;
   shape: number;
-  toLocal: Matrix | undefined;
   /** The points the path was last written from, one array per spline, to skip unchanged shapes. */
   drawn: Float64Array[];
-  /** Set the map its user-space gradients and patterns follow (see src/svg/paint-follow.ts). */
-  follow: ((m: Matrix) => void)[];
+  /** Sets the map its gradients and patterns follow (SvgDocument.paintFollower), or null. */
+  follow: ((m: Matrix | null) => void) | null;
 }
 
 /**
@@ -153,10 +149,9 @@ export class SvgLayer {
 
     const byIndex = new Map<number, Element>();
     for (const el of Array.from(svg.querySelectorAll(`[${SHAPE_ATTRIBUTE}]`))) byIndex.set(Number(el.getAttribute(SHAPE_ATTRIBUTE)), el);
-    doc.shapes.forEach((shape, i) => {
+    doc.shapes.forEach((_, i) => {
       const el = byIndex.get(i);
-      const inv = invert(shape.transform);
-      if (el && inv) this.targets.push({ el, shape: i, toLocal: isIdentity(inv) ? undefined : inv, drawn: [], follow: paintFollowers(doc, i, svg, el) });
+      if (el) this.targets.push({ el, shape: i, drawn: [], follow: doc.paintFollower(i, svg, el) });
     });
   }
 
@@ -174,11 +169,8 @@ export class SvgLayer {
         t.el.setAttribute('d', '');
         continue;
       }
-      t.el.setAttribute('d', splinesToPathData(splines, t.toLocal, this.format));
-      if (t.follow.length > 0) {
-        const m = doc.paintTransform(t.shape) ?? IDENTITY;
-        for (const follow of t.follow) follow(m);
-      }
+      t.el.setAttribute('d', doc.pathData(t.shape, this.format) ?? '');
+      t.follow?.(doc.paintTransform(t.shape));
       written++;
     }
     return { written, skipped };
