@@ -2,11 +2,8 @@
 // one drag update on a 10,000-point Catmull-Rom curve and the capture of a 2,000-sample stroke,
 // through the package as an embedder calls it (wasm in Node). Medians after warm-up.
 import { CatmullRom, LocalEdit, memory } from '../dist/index.js';
+import { median } from './stats.mjs';
 
-function median(xs) {
-  const s = [...xs].sort((a, b) => a - b);
-  return s[Math.floor(s.length / 2)];
-}
 
 /** Median ms per call of fn, timed in batches of `batch` calls (sub-microsecond calls need it). */
 function perCall(fn, batches = 200, batch = 50, warmup = 20) {

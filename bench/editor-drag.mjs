@@ -9,6 +9,7 @@ import { execFileSync } from 'node:child_process';
 import { join } from 'node:path';
 import { chromium } from '@playwright/test';
 import { preview } from 'vite';
+import { median } from './stats.mjs';
 
 const CHROMIUM_ARGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
@@ -20,10 +21,6 @@ export const DRAG_FILES = ['svg/illustrations/ghostscript_tiger_inkscape.svg', '
 /** Handle spots as fractions of the drawing's bounds. */
 const SPOTS = [[0.5, 0.2], [0.5, 0.55], [0.75, 0.85]];
 
-function median(xs) {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length ? s[Math.floor(s.length / 2)] : NaN;
-}
 
 async function waitRig(page) {
   await page.waitForFunction(() => {

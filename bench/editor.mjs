@@ -9,6 +9,7 @@ import { join } from 'node:path';
 import { chromium } from '@playwright/test';
 import { preview } from 'vite';
 import { parseSVG } from '../dist/index.js';
+import { median } from './stats.mjs';
 
 /** Launch arguments that work headless on these machines (the same as playwright.config.ts). */
 const CHROMIUM_ARGS = [
@@ -19,10 +20,6 @@ const CHROMIUM_ARGS = [
 /** The file the road-runner e2e test opens: the largest shared SVG. */
 export const EDITOR_IMPORT_FILE = 'svg/illustrations/oc_road_runner_car.svg';
 
-function median(xs) {
-  const s = [...xs].sort((a, b) => a - b);
-  return s[Math.floor(s.length / 2)];
-}
 
 /**
  * Times the editor in Chromium, `runs` times, each in a new browser context:

@@ -12,24 +12,11 @@ import { createRequire } from 'node:module';
 import { join } from 'node:path';
 import { Morph, memory, parseSVG } from '../dist/index.js';
 import { bezierRings, frameFailures, parents, signedArea2 } from './morph-quality.mjs';
+import { time } from './stats.mjs';
 
 const flubber = createRequire(import.meta.url)('flubber');
 
-function median(xs) {
-  const s = [...xs].sort((a, b) => a - b);
-  return s[Math.floor(s.length / 2)];
-}
 
-function time(fn, repeats, warmup = 3) {
-  for (let i = 0; i < warmup; i++) fn();
-  const t = [];
-  for (let i = 0; i < repeats; i++) {
-    const a = performance.now();
-    fn();
-    t.push(performance.now() - a);
-  }
-  return median(t);
-}
 
 /** Path data of one spline (document space), for flubber. */
 function contourD(s) {

@@ -19,27 +19,13 @@ import { fidelityFigures, fidelitySection } from './fidelity.mjs';
 import { morphBenchmarks, morphSection } from './morph.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
+import { time } from './stats.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
 const data = join(root, '../shared/data');
 mkdirSync(join(root, 'build/bench'), { recursive: true });
 
-function median(xs) {
-  const s = [...xs].sort((a, b) => a - b);
-  return s[Math.floor(s.length / 2)];
-}
 
-/** Median ms of fn over `repeats` runs after `warmup` runs. */
-function time(fn, repeats, warmup = 3) {
-  for (let i = 0; i < warmup; i++) fn();
-  const t = [];
-  for (let i = 0; i < repeats; i++) {
-    const a = performance.now();
-    fn();
-    t.push(performance.now() - a);
-  }
-  return median(t);
-}
 
 await init();
 

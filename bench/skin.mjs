@@ -5,6 +5,7 @@ import { join } from 'node:path';
 import { SkinRig, SkinWeights, SplineSet, buildDomain, domainWeights, memory, outlineSamples, parseSVG } from '../dist/index.js';
 import { mulberry32 } from '../dist/core/random.js';
 import { farthestPoints } from '../dist/core/farthest-points.js';
+import { median } from './stats.mjs';
 
 /** `count` handles spread over the artwork: farthest-point sampling of on-curve points. */
 export function spreadHandles(doc, count) {
@@ -38,10 +39,6 @@ export function randomPose(handles, random, maxDeg = 60) {
   });
 }
 
-function median(xs) {
-  const s = [...xs].sort((a, b) => a - b);
-  return s[Math.floor(s.length / 2)];
-}
 
 export function skinSpeed(data, time) {
   const rel = 'svg/illustrations/oc_road_runner_car.svg';
