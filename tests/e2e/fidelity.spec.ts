@@ -203,8 +203,12 @@ for (const [label, path] of [
   });
 }
 
-test('a hostile file cannot run script in the editor', async ({ page }, testInfo) => {
+test('a hostile file cannot run script in the editor, and opening a file fetches nothing', async ({ page }, testInfo) => {
   await openEditor(page);
+  const fetched: string[] = [];
+  page.on('request', (r) => {
+    if (!r.url().startsWith('data:') && !r.url().startsWith('blob:')) fetched.push(r.url());
+  });
   const file = testInfo.outputPath('hostile.svg');
   writeFileSync(
     file,
@@ -214,6 +218,9 @@ test('a hostile file cannot run script in the editor', async ({ page }, testInfo
       <image href="x" onerror="window.pwned = 4" width="10" height="10"/>
       <foreignObject width="100" height="100"><iframe xmlns="http://www.w3.org/1999/xhtml" src="javascript:parent.pwned=5"></iframe></foreignObject>
       <a xlink:href="javascript:window.pwned = 6"><circle cx="70" cy="70" r="20"/></a>
+      <style>@import url(http://127.0.0.1:9/x.css); rect { stroke: url(http://127.0.0.1:9/p.svg#p) }</style>
+      <image href="http://127.0.0.1:9/x.png" width="10" height="10"/>
+      <circle cx="20" cy="80" r="5" style="fill: url('http://127.0.0.1:9/g.svg#g')"/>
     </svg>`,
   );
   await page.getByTestId('file-input').setInputFiles(file);
@@ -221,6 +228,7 @@ test('a hostile file cannot run script in the editor', async ({ page }, testInfo
   expect(state.error).toBeNull();
   await page.waitForTimeout(300);
   expect(await page.evaluate(() => (window as unknown as { pwned?: number }).pwned ?? 0)).toBe(0);
-  // The shapes are drawn all the same.
-  expect(state.elements).toBe(2);
+  // The shapes are drawn all the same; nothing was asked of the network.
+  expect(state.elements).toBe(3);
+  expect(fetched).toEqual([]);
 });

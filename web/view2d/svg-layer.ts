@@ -40,8 +40,9 @@ interface Target {
  * the viewBox, so the browser re-renders at the current zoom.
  *
  * The markup is sanitised (DOMPurify, SVG profiles) before it enters the page: scripts, event
- * handler attributes, foreign objects and non-local references are dropped, so a hostile file
- * cannot run code in the editor.
+ * handler attributes and foreign objects are dropped, so a hostile file cannot run code in the
+ * editor, and references outside the file (links, images, stylesheets on the network) are
+ * dropped, so opening it fetches nothing — as when the browser shows a file as an image.
  */
 export class SvgLayer {
   /** The element holding the drawing (under the WebGL canvas, which stays transparent). */
@@ -138,6 +139,7 @@ export class SvgLayer {
       FORBID_TAGS: ['foreignObject', 'script'],
     });
     dropOverflowingNumbers(source);
+    dropExternalReferences(source);
     const svg = document.importNode(source, true) as unknown as SVGSVGElement;
     // The view decides what is visible; the file's own size and placement no longer apply.
     for (const name of ['x', 'y', 'transform']) svg.removeAttribute(name);
@@ -209,5 +211,24 @@ function dropOverflowingNumbers(root: Element): void {
       const numbers = attr.value.match(/[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?/g) ?? [];
       if (numbers.some((n) => !(Math.abs(Number(n)) <= FLOAT32_MAX))) el.removeAttributeNode(attr);
     }
+  }
+}
+
+/** A reference inside the file (`#id`) or embedded in it (a data: image). */
+const LOCAL_REFERENCE = /^\s*(#|data:image\/)/i;
+
+/**
+ * Removes references to anything outside the file: href attributes that are not `#id` or a data:
+ * image, url(…) to other places and @import in style attributes and style sheets.
+ */
+function dropExternalReferences(root: Element): void {
+  const css = (text: string) =>
+    text.replace(/@import[^;]*;?/gi, '').replace(/url\(\s*(['"]?)([^)'"]*)\1\s*\)/gi, (all, _q: string, target: string) => (LOCAL_REFERENCE.test(target) ? all : 'none'));
+  for (const el of [root, ...Array.from(root.getElementsByTagName('*'))]) {
+    for (const attr of Array.from(el.attributes)) {
+      if (attr.localName === 'href' && !LOCAL_REFERENCE.test(attr.value)) el.removeAttributeNode(attr);
+      else if (attr.localName === 'style' && /url\(|@import/i.test(attr.value)) attr.value = css(attr.value);
+    }
+    if (el.localName === 'style' && el.textContent) el.textContent = css(el.textContent);
   }
 }
