@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.js';
-import { docsScreenshot, frames, openEditor, sharedData } from './helpers.js';
+import { docsScreenshot, fingerprint, fingerprintDistance, frames, openEditor, sharedData } from './helpers.js';
 
 /**
  * Morph mode end to end: two keys (the mode's own sample and a glyph from the shared data opened
@@ -49,10 +49,15 @@ test('loads two shapes, scrubs t, pins an anchor with undo, and exports an anima
   await slider.fill('0');
   await page.waitForFunction(() => window.splinekitEditor!.morph().t === 0);
   const at0 = (await morph(page)).checksum;
+  await frames(page);
+  const drawn0 = await fingerprint(page);
   await slider.fill('1000');
   await page.waitForFunction(() => window.splinekitEditor!.morph().t === 1);
   const at1 = (await morph(page)).checksum;
   expect(at1).not.toBe(at0);
+  // The view draws the new in-between (its paths are rewritten in place, not remounted).
+  await frames(page);
+  expect(fingerprintDistance(drawn0, await fingerprint(page)), 'the drawing changed with t').toBeGreaterThan(1);
   await expect(page.getByTestId('morph-t')).toHaveText('1.000');
 
   // A pin: drag from an anchor of the first key to a far anchor of the second.

@@ -73,6 +73,8 @@ export class MorphMode implements Mode {
   private off: (() => void)[] = [];
   private spec: MorphSpec = DEFAULT_SPEC;
   private morph: Morph | null = null;
+  /** The in-between's markup, written once per morph: showing another t only moves its paths. */
+  private inBetween: SvgDocument | null = null;
   private error: string | null = null;
   private stats = { ms: 0, frameMs: 0 };
   private layers = { onion: true, lines: true };
@@ -126,6 +128,7 @@ export class MorphMode implements Mode {
     this.layer = null;
     this.morph?.dispose();
     this.morph = null;
+    this.inBetween = null;
     const ctx = this.ctx;
     if (ctx) {
       ctx.view.setDocument(ctx.state.doc);
@@ -193,6 +196,7 @@ export class MorphMode implements Mode {
   private rebuild(): void {
     this.morph?.dispose();
     this.morph = null;
+    this.inBetween = null;
     this.error = null;
     try {
       const a = this.keyDoc(this.spec.a), b = this.keyDoc(this.spec.b);
@@ -216,6 +220,21 @@ export class MorphMode implements Mode {
     this.show();
   }
 
+  /**
+   * The in-between at t as a document: a copy of the first one written (same markup, so the view
+   * rewrites only the paths' data) with this t's splines; written anew if the structure differs.
+   */
+  private inBetweenAt(m: Morph, t: number): SvgDocument {
+    const base = this.inBetween;
+    const splines = m.splines(t);
+    if (base && base.splines.length === splines.length && base.splines.every((s, i) => s.points.length === splines[i].points.length)) {
+      const doc = base.clone();
+      doc.splines.forEach((s, i) => s.points.set(splines[i].points));
+      return doc;
+    }
+    return (this.inBetween = m.document(t));
+  }
+
   /** Draws the in-between at the spec's t, the keys, the correspondence and the pins. */
   private show(): void {
     const ctx = this.ctx;
@@ -228,7 +247,7 @@ export class MorphMode implements Mode {
       let sum = 0;
       for (let i = 0; i < points.length; i++) sum += points[i] * ((i % 7) + 1);
       this.checksum = sum;
-      const doc = m.document(this.spec.t);
+      const doc = this.inBetweenAt(m, this.spec.t);
       if (this.fitted) ctx.view.showDrawing(doc);
       else ctx.view.setDocument(doc);
       this.fitted = true;
