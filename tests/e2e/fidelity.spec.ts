@@ -232,3 +232,26 @@ test('a hostile file cannot run script in the editor, and opening a file fetches
   expect(state.elements).toBe(3);
   expect(fetched).toEqual([]);
 });
+
+test('a drawing the browser cannot show is named in the warnings, and the editor keeps working', async ({ page }) => {
+  await openEditor(page);
+  // The page's XML parser fails on the view's markup, as it would on markup it cannot read.
+  await page.evaluate(() => {
+    const real = DOMParser.prototype.parseFromString;
+    (window as unknown as { restoreParser: () => void }).restoreParser = () => (DOMParser.prototype.parseFromString = real);
+    DOMParser.prototype.parseFromString = function (this: DOMParser, text: string, type: DOMParserSupportedType) {
+      if (!text.includes('data-splinekit-shape')) return real.call(this, text, type);
+      throw new Error('parser exploded');
+    } as DOMParser['parseFromString'];
+  });
+  await page.getByTestId('file-input').setInputFiles(sharedData('svg/characters/oc_dog.svg'));
+  const state = await waitForFile(page, 'oc_dog.svg');
+  expect(state.elements).toBe(8);
+  await expect(page.getByTestId('warnings')).toContainText('<svg>: not drawn (the drawing could not be shown: parser exploded)');
+  // With the parser back, the next file is drawn.
+  await page.evaluate(() => (window as unknown as { restoreParser: () => void }).restoreParser());
+  await page.getByTestId('file-input').setInputFiles(sharedData('svg/characters/oc_stick_man.svg'));
+  await waitForFile(page, 'oc_stick_man.svg');
+  await expect(page.getByTestId('warnings')).not.toContainText('not drawn');
+  expect(await page.locator('.view2d-drawing').evaluate((h) => h.shadowRoot!.querySelectorAll('svg.drawing path').length)).toBeGreaterThan(0);
+});

@@ -1,4 +1,5 @@
 import DOMPurify from 'dompurify';
+import { messageOf } from '../app/errors.js';
 import { SHAPE_ATTRIBUTE, type Matrix, type SvgDocument } from '../../src/index.js';
 import type { Viewport } from './viewport.js';
 
@@ -92,7 +93,13 @@ export class SvgLayer {
     }
     const mounted = this.doc !== null && this.svg !== null && this.doc.sameMarkup(doc) && this.doc.shapes.length === doc.shapes.length;
     if (!mounted) {
-      this.mount(doc);
+      try {
+        this.mount(doc);
+      } catch (err) {
+        // Nothing is drawn, and the view says why; the document itself is open.
+        this.unmount();
+        return { shapes: 0, written: 0, ms: performance.now() - t0, skipped: [{ element: '<svg>', reason: `the drawing could not be shown: ${messageOf(err)}` }] };
+      }
       const q = 10 ** Math.ceil(Math.log10(1e7 / doc.size));
       this.format = (v) => String(Math.round(v * q) / q);
     }
@@ -130,7 +137,7 @@ export class SvgLayer {
     this.unmount();
     const parsed = new DOMParser().parseFromString(doc.toSVG({ rewrite: 'all', tagShapes: true }), 'image/svg+xml');
     const source = parsed.documentElement;
-    if (source.localName !== 'svg') throw new Error('the drawing could not be shown: its markup did not parse back');
+    if (source.localName !== 'svg') throw new Error('its markup did not parse back');
     DOMPurify.sanitize(source, {
       IN_PLACE: true,
       USE_PROFILES: { svg: true, svgFilters: true },
