@@ -75,6 +75,7 @@ export class ControlOverlay {
   readonly group = new Group();
   private doc: SvgDocument | null = null;
   private hover: AnchorSelection | null = null;
+  private selection: AnchorSelection | null = null;
   /** Per anchor: its spline and point index (for picking and recoloring). */
   private anchorSpline = new Int32Array(0);
   private anchorPoint = new Int32Array(0);
@@ -155,6 +156,45 @@ export class ControlOverlay {
     this.setHover(null);
   }
 
+  /**
+   * Follows new positions of the same splines (a pose, a blend): moves the markers and handle
+   * lines in place, keeping colours, selection and hover; a document with other splines is set
+   * anew (setDocument).
+   */
+  update(doc: SvgDocument): void {
+    const old = this.doc;
+    const same = old !== null && old.splines.length === doc.splines.length && old.splines.every((s, i) => s.points.length === doc.splines[i].points.length);
+    if (!same) return this.setDocument(doc);
+    this.doc = doc;
+    const anchors = this.anchors.geometry.getAttribute('position') as Float32BufferAttribute;
+    const handles = this.handles.geometry.getAttribute('position') as Float32BufferAttribute;
+    const lines = this.lines.geometry.getAttribute('position') as Float32BufferAttribute;
+    const a = anchors.array as Float32Array, h = handles.array as Float32Array, l = lines.array as Float32Array;
+    let ai = 0, hi = 0, li = 0;
+    for (const s of doc.splines) {
+      const p = s.points, n = p.length / 2;
+      for (let i = 0; i < n; i++) {
+        if (i % 3 === 0) {
+          this.anchorXY[2 * ai] = a[3 * ai] = p[2 * i];
+          this.anchorXY[2 * ai + 1] = a[3 * ai + 1] = p[2 * i + 1];
+          ai++;
+          continue;
+        }
+        // As in setDocument: handle i and the line to its anchor.
+        const k = i % 3 === 1 ? i - 1 : (i + 1) % n;
+        h[3 * hi] = p[2 * i];
+        h[3 * hi + 1] = p[2 * i + 1];
+        l.set([p[2 * k], p[2 * k + 1], 0, p[2 * i], p[2 * i + 1], 0], 6 * li);
+        hi++;
+        li++;
+      }
+    }
+    anchors.needsUpdate = handles.needsUpdate = lines.needsUpdate = true;
+    this.setSelection(this.selection);
+    this.setHover(this.hover);
+    this.view.requestRender();
+  }
+
   /** Re-reads the continuity tags (after an override). */
   recolor(): void {
     const doc = this.doc;
@@ -172,6 +212,7 @@ export class ControlOverlay {
   }
 
   setSelection(sel: AnchorSelection | null): void {
+    this.selection = sel;
     this.mark(this.selected, sel, hexToRGB(SELECTION_COLOR));
   }
 

@@ -75,8 +75,8 @@ export class SkinView {
       this.shownPoints = points;
       const shown: SvgDocument = points ? s.rig!.rig.posedDocument(points) : doc;
       ctx.view.showDrawing(shown);
-      // The control points follow the pose when shown (H); rebuilt when they are turned on.
-      if (ctx.state.overlay) ctx.overlay.setDocument(shown);
+      // The control points follow the pose when shown (H), moved in place.
+      if (ctx.state.overlay) ctx.overlay.update(shown);
     }
 
     // While a handle is dragged or the timeline plays, the errors shown are the last measured.
