@@ -3,7 +3,7 @@ import { messageOf } from '../app/errors.js';
 import { SHAPE_ATTRIBUTE, type Matrix, type SvgDocument } from '../../src/index.js';
 import type { Viewport } from './viewport.js';
 
-/** A shape the drawing left out (its element stays in the markup, drawn as the file has it or not at all). */
+/** A shape the drawing leaves out (its path is left empty), or the whole drawing when it cannot be shown. */
 export interface SkippedShape {
   /** The element as a user finds it in the file: `<path id="leg"> at line 12`. */
   element: string;
