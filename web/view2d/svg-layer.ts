@@ -75,11 +75,6 @@ export class SvgLayer {
     this.root.append(style, this.paper);
   }
 
-  /** The drawing's root `<svg>` (in the shadow root), or null when no document is shown. */
-  get element(): SVGSVGElement | null {
-    return this.svg;
-  }
-
   /**
    * Shows `doc`: the first time (or for another document's markup) it mounts its markup; for
    * another version of the shown document (a clone, a posed copy) it writes only the paths whose
