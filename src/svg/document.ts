@@ -1,10 +1,11 @@
 import { XMLSerializer } from '@xmldom/xmldom';
 import { SplinekitError } from '../core/errors.js';
-import { cloneSpline, segmentCount, type ContinuityKind, type Spline } from '../spline/spline.js';
+import { cloneSpline, segmentCount, type ContinuityKind, type ContinuityTag, type Spline } from '../spline/spline.js';
 import { IDENTITY, invert, isIdentity, transformPoints, type Matrix } from './matrix.js';
 import { findById, fitAffine, paintFollower, splineBounds } from './paint-follow.js';
 import { formatNumber, splinesToPathData } from './path-data.js';
 import type { ResolvedStyle } from './style.js';
+import { parseXML } from './xml.js';
 
 /** Something the model keeps as is (or could not carry), reported once per kind. */
 export interface SvgWarning {
@@ -90,6 +91,50 @@ export interface ShapeSource {
   original: Float64Array[];
 }
 
+/**
+ * An {@link SvgDocument} as plain, structured-clonable data (strings, numbers, plain objects and
+ * Float64Arrays, no DOM), to hand a document from a Web Worker to the page: `toTransfer()` on one
+ * side, `SvgDocument.fromTransfer()` on the other. Its fields are an implementation detail: only
+ * pass it between the two calls of the same splinekit version.
+ */
+export interface SvgDocumentTransfer {
+  /** The retained markup, serialized (internal entities already expanded). */
+  markup: string;
+  /** The splines (points are copies; their buffers may be transferred). */
+  splines: {
+    /** As in Spline.closed. */
+    closed: boolean;
+    /** As in Spline.points. */
+    points: Float64Array;
+    /** As in Spline.continuity. */
+    continuity: ContinuityTag[];
+  }[];
+  /** The shapes, as in {@link SvgDocument.shapes}. */
+  shapes: SvgShape[];
+  /**
+   * Where each shape came from: elements as indices in a pre-order walk of the markup's elements
+   * (the root element is 0); `uses` holds (use, referenced element) index pairs, outermost first.
+   */
+  sources: {
+    /** (use, referenced element) index pairs, flattened. */
+    uses: number[];
+    /** The shape element's index. */
+    element: number;
+    /** The shape's splines as imported (points, document space). */
+    original: Float64Array[];
+  }[];
+  /** As in {@link SvgDocument.warnings}. */
+  warnings: SvgWarning[];
+  /** As in {@link SvgDocument.width}. */
+  width: number;
+  /** As in {@link SvgDocument.height}. */
+  height: number;
+  /** As in {@link SvgDocument.viewBox}. */
+  viewBox: [number, number, number, number] | null;
+  /** As in {@link SvgDocument.bounds}. */
+  bounds: [number, number, number, number] | null;
+}
+
 export interface SvgDocumentInit {
   dom: Document;
   splines: Spline[];
@@ -143,6 +188,69 @@ export class SvgDocument {
     this.height = init.height;
     this.viewBox = init.viewBox;
     this.bounds = init.bounds;
+  }
+
+  /**
+   * This document as plain data that survives `structuredClone` / `postMessage` (e.g. parse in a
+   * Web Worker, rebuild on the page with {@link SvgDocument.fromTransfer}). Everything is copied:
+   * the buffers of its Float64Arrays may be transferred without affecting this document.
+   */
+  toTransfer(): SvgDocumentTransfer {
+    const index = new Map<Element, number>();
+    for (const el of elementsInOrder(this.dom.documentElement!)) index.set(el, index.size);
+    const at = (el: Element): number => {
+      const i = index.get(el);
+      if (i === undefined) throw new SplinekitError('internal', 'toTransfer: a shape refers to an element outside its markup');
+      return i;
+    };
+    return {
+      markup: serialize(this.dom),
+      splines: this.splines.map(cloneSpline),
+      shapes: this.shapes.map((s) => ({ ...s, transform: { ...s.transform }, style: { ...s.style }, via: [...s.via] })),
+      sources: this.sources.map((src) => ({
+        uses: src.uses.flatMap(({ use, ref }) => [at(use), at(ref)]),
+        element: at(src.element),
+        original: src.original.map((p) => Float64Array.from(p)),
+      })),
+      warnings: this.warnings.map((w) => ({ ...w })),
+      width: this.width,
+      height: this.height,
+      viewBox: this.viewBox && [...this.viewBox],
+      bounds: this.bounds && [...this.bounds],
+    };
+  }
+
+  /**
+   * Rebuilds a document from {@link SvgDocument.toTransfer}'s data (after `structuredClone` or
+   * `postMessage`): same splines, shapes, warnings and export as the original. Takes ownership of
+   * the data's arrays. Throws SplinekitError('invalid-input') for data that does not fit its markup.
+   */
+  static fromTransfer(t: SvgDocumentTransfer): SvgDocument {
+    const dom = parseXML(t.markup, 'transferred document');
+    const elements = elementsInOrder(dom.documentElement!);
+    const at = (i: number): Element => {
+      const el = elements[i];
+      if (!el) throw new SplinekitError('invalid-input', `fromTransfer: element ${i} is not in the markup (${elements.length} elements)`);
+      return el;
+    };
+    if (t.sources.length !== t.shapes.length) {
+      throw new SplinekitError('invalid-input', `fromTransfer: ${t.shapes.length} shapes but ${t.sources.length} sources`);
+    }
+    return new SvgDocument({
+      dom,
+      splines: t.splines.map((s) => ({ closed: s.closed, points: s.points, continuity: s.continuity })),
+      shapes: t.shapes,
+      sources: t.sources.map((src) => {
+        const uses: ShapeSource['uses'] = [];
+        for (let k = 0; k + 1 < src.uses.length; k += 2) uses.push({ use: at(src.uses[k]), ref: at(src.uses[k + 1]) });
+        return { uses, element: at(src.element), original: src.original };
+      }),
+      warnings: t.warnings,
+      width: t.width,
+      height: t.height,
+      viewBox: t.viewBox,
+      bounds: t.bounds,
+    });
   }
 
   /** The drawing's size: the diagonal of its bounds (1 when it has no curves). Tolerances scale with it. */
@@ -437,6 +545,17 @@ export class SvgDocument {
 function serialize(out: Document): string {
   const xml = new XMLSerializer().serializeToString(out as unknown as Parameters<XMLSerializer['serializeToString']>[0]);
   return xml.startsWith('<?xml') ? xml : `<?xml version="1.0" encoding="UTF-8"?>\n${xml}`;
+}
+
+/** The elements under `root` (itself included) in document (pre-)order. */
+function elementsInOrder(root: Element): Element[] {
+  const out: Element[] = [];
+  const visit = (el: Element): void => {
+    out.push(el);
+    for (let c = el.firstChild; c; c = c.nextSibling) if (c.nodeType === 1) visit(c as Element);
+  };
+  visit(root);
+  return out;
 }
 
 /** Maps every element of `a` to the element at the same place in `b` (a structural copy of a). */
