@@ -91,15 +91,15 @@ describe('SvgDocument.toTransfer / fromTransfer', () => {
     expect(typeof t.markup).toBe('string');
     expect(t.markup).toContain('<!DOCTYPE svg');
     expect(t.markup).not.toContain('&ns_svg;<'); // references were expanded before parsing
-    t.splines[0].points[0] += 100;
-    t.sources[0].original[0][0] += 100;
+    t.splines.points[0] += 100;
+    t.sources.original[0] += 100;
     expect(doc.toSVG()).toBe(parseSVG(ILLUSTRATOR_HEAD + ILLUSTRATOR_BODY, { name: 'ai' }).toSVG());
-    expect(doc.splines[0].points[0]).not.toBe(t.splines[0].points[0]);
+    expect(doc.splines[0].points[0]).not.toBe(t.splines.points[0]);
   });
 
   test('a transfer whose elements do not fit its markup is refused', () => {
     const t = parseSVG('<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0L1 1"/></svg>').toTransfer();
-    t.sources[0].element = 7;
+    t.sources.elements[0] = 7;
     expect(() => SvgDocument.fromTransfer(t)).toThrow(/element 7 is not in the markup/);
   });
 });

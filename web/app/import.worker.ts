@@ -25,8 +25,7 @@ async function handle(req: ImportRequest, post: PostReply<ImportReply>): Promise
     return;
   }
   // The arrays are this reply's own copies: hand them over instead of copying them again.
-  const buffers: Transferable[] = [];
-  for (const s of transfer.splines) buffers.push(s.points.buffer);
-  for (const s of transfer.sources) for (const p of s.original) buffers.push(p.buffer);
+  const { splines, sources } = transfer;
+  const buffers: Transferable[] = [splines.points.buffer, sources.original.buffer];
   post({ type: 'done', id: req.id, transfer, markup, parseMs }, buffers);
 }
