@@ -17,8 +17,8 @@ export type ImportReply =
       id: number;
       /** The document as plain data (SvgDocument.fromTransfer rebuilds it). */
       transfer: SvgDocumentTransfer;
-      /** Its live markup, `toSVG({ rewrite: 'all', tagShapes: true })`, for the 2D view. */
-      markup: string;
+      /** Its live markup, `toSVG({ rewrite: 'all', tagShapes: true })`, for the 2D view (null if that failed). */
+      markup: string | null;
       /** Time parseSVG took in the worker, in milliseconds. */
       parseMs: number;
     }

@@ -17,8 +17,13 @@ async function handle(req: ImportRequest, post: PostReply<ImportReply>): Promise
   try {
     const doc = parseSVG(req.bytes, { name: req.name });
     parseMs = performance.now() - t0;
-    markup = doc.toSVG({ rewrite: 'all', tagShapes: true });
     transfer = doc.toTransfer();
+    try {
+      markup = doc.toSVG({ rewrite: 'all', tagShapes: true });
+    } catch {
+      // The document opens; the view writes the markup itself and shows why it cannot draw it.
+      markup = null;
+    }
   } catch (err) {
     const failure = importFailure(err, req.name);
     post({ type: 'failed', id: req.id, message: failure.message, code: err instanceof SplinekitError ? err.code : null });

@@ -60,7 +60,7 @@ export async function openSVG(bytes: Uint8Array, file: string, hash = contentHas
   } catch (err) {
     throw importFailure(err, file);
   }
-  primeLiveMarkup(doc, reply.markup);
+  if (reply.markup !== null) primeLiveMarkup(doc, reply.markup);
   return { doc, file, importMs: performance.now() - t0, bytes: bytes.length, source: bytes, hash };
 }
 
