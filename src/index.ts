@@ -32,6 +32,7 @@ export {
   type ExportOptions,
   type SplinesJSON,
   type SvgShape,
+  type SvgDocumentTransfer,
   type SvgStats,
   type SvgWarning,
 } from './svg/document.js';

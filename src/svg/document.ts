@@ -1,10 +1,11 @@
 import { XMLSerializer } from '@xmldom/xmldom';
 import { SplinekitError } from '../core/errors.js';
-import { cloneSpline, segmentCount, type ContinuityKind, type Spline } from '../spline/spline.js';
+import { CONTINUITY_KINDS, cloneSpline, segmentCount, type ContinuityKind, type ContinuityTag, type Spline } from '../spline/spline.js';
 import { IDENTITY, invert, isIdentity, transformPoints, type Matrix } from './matrix.js';
 import { findById, fitAffine, paintFollower, splineBounds } from './paint-follow.js';
 import { formatNumber, splinesToPathData } from './path-data.js';
 import type { ResolvedStyle } from './style.js';
+import { parseXML } from './xml.js';
 
 /** Something the model keeps as is (or could not carry), reported once per kind. */
 export interface SvgWarning {
@@ -90,6 +91,89 @@ export interface ShapeSource {
   original: Float64Array[];
 }
 
+/**
+ * An {@link SvgDocument} as plain, structured-clonable data (strings, numbers, plain objects and
+ * typed arrays, no DOM), to hand a document from a Web Worker to the page: `toTransfer()` on one
+ * side, `SvgDocument.fromTransfer()` on the other. Its fields are an implementation detail: only
+ * pass it between the two calls of the same splinekit version.
+ */
+export interface SvgDocumentTransfer {
+  /** The retained markup, serialized (internal entities already expanded). */
+  markup: string;
+  /**
+   * The splines, packed into a few arrays (cloning a hundred thousand small objects costs the
+   * receiving page more than the parse it saves): spline k's points are
+   * points[pointEnds[k-1] … pointEnds[k]) (0 for k = 0), its tags tags*[tagEnds[k-1] … tagEnds[k]).
+   */
+  splines: {
+    /** Every spline's points, in document order. */
+    points: Float64Array;
+    /** End of each spline's points in `points`. */
+    pointEnds: Uint32Array;
+    /** 1 for a closed spline. */
+    closed: Uint8Array;
+    /** End of each spline's continuity tags in the tag arrays. */
+    tagEnds: Uint32Array;
+    /** Each tag's kind, as its index in CONTINUITY_KINDS. */
+    tagKinds: Uint8Array;
+    /** Each tag's ratio. */
+    tagRatios: Float64Array;
+    /** Each tag's angle. */
+    tagAngles: Float64Array;
+  };
+  /** The shapes (as in {@link SvgDocument.shapes}), packed field by field. */
+  shapes: {
+    /** Element names. */
+    tags: string[];
+    /** `id` attributes. */
+    ids: (string | null)[];
+    /** Lines in the file. */
+    lines: Uint32Array;
+    /** First spline of each. */
+    firstSplines: Uint32Array;
+    /** Number of splines of each. */
+    splineCounts: Uint32Array;
+    /** Transforms, a b c d e f per shape. */
+    transforms: Float64Array;
+    /** The distinct resolved styles. */
+    styles: ResolvedStyle[];
+    /** Each shape's style, as an index in `styles`. */
+    styleOf: Uint32Array;
+    /** Every shape's `via`, concatenated; shape i's ends at viaEnds[i]. */
+    via: string[];
+    /** End of each shape's `via` in `via`. */
+    viaEnds: Uint32Array;
+  };
+  /**
+   * Where each shape came from, with elements as indices in a pre-order walk of the markup's
+   * elements (the root element is 0).
+   */
+  sources: {
+    /** The shape element of each shape. */
+    elements: Uint32Array;
+    /** (use, referenced element) pairs, outermost first, every shape's concatenated. */
+    uses: Uint32Array;
+    /** End of each shape's pairs in `uses` (in numbers, two per pair). */
+    useEnds: Uint32Array;
+    /** The splines as imported (document space), every shape's concatenated. */
+    original: Float64Array;
+    /** End of each original spline's points in `original`. */
+    originalEnds: Uint32Array;
+    /** End of each shape's original splines in `originalEnds`. */
+    originalCounts: Uint32Array;
+  };
+  /** As in {@link SvgDocument.warnings}. */
+  warnings: SvgWarning[];
+  /** As in {@link SvgDocument.width}. */
+  width: number;
+  /** As in {@link SvgDocument.height}. */
+  height: number;
+  /** As in {@link SvgDocument.viewBox}. */
+  viewBox: [number, number, number, number] | null;
+  /** As in {@link SvgDocument.bounds}. */
+  bounds: [number, number, number, number] | null;
+}
+
 export interface SvgDocumentInit {
   dom: Document;
   splines: Spline[];
@@ -143,6 +227,169 @@ export class SvgDocument {
     this.height = init.height;
     this.viewBox = init.viewBox;
     this.bounds = init.bounds;
+  }
+
+  /**
+   * This document as plain data that survives `structuredClone` / `postMessage` (e.g. parse in a
+   * Web Worker, rebuild on the page with {@link SvgDocument.fromTransfer}). Everything is copied:
+   * the buffers of its Float64Arrays may be transferred without affecting this document.
+   */
+  toTransfer(): SvgDocumentTransfer {
+    const index = new Map<Element, number>();
+    for (const el of elementsInOrder(this.dom.documentElement!)) index.set(el, index.size);
+    const at = (el: Element): number => {
+      const i = index.get(el);
+      if (i === undefined) throw new SplinekitError('internal', 'toTransfer: a shape refers to an element outside its markup');
+      return i;
+    };
+    const kindIndex = new Map(CONTINUITY_KINDS.map((k, i) => [k, i]));
+    const n = this.splines.length;
+    let pointCount = 0, tagCount = 0;
+    for (const sp of this.splines) {
+      pointCount += sp.points.length;
+      tagCount += sp.continuity.length;
+    }
+    const splines = {
+      points: new Float64Array(pointCount), pointEnds: new Uint32Array(n), closed: new Uint8Array(n), tagEnds: new Uint32Array(n),
+      tagKinds: new Uint8Array(tagCount), tagRatios: new Float64Array(tagCount), tagAngles: new Float64Array(tagCount),
+    };
+    let p = 0, q = 0;
+    this.splines.forEach((sp, k) => {
+      splines.points.set(sp.points, p);
+      p += sp.points.length;
+      splines.pointEnds[k] = p;
+      splines.closed[k] = sp.closed ? 1 : 0;
+      for (const tag of sp.continuity) {
+        splines.tagKinds[q] = kindIndex.get(tag.kind)!;
+        splines.tagRatios[q] = tag.ratio;
+        splines.tagAngles[q++] = tag.angle;
+      }
+      splines.tagEnds[k] = q;
+    });
+
+    const m = this.shapes.length;
+    const styleIndex = new Map<string, number>();
+    const shapes = {
+      tags: [] as string[], ids: [] as (string | null)[], lines: new Uint32Array(m), firstSplines: new Uint32Array(m),
+      splineCounts: new Uint32Array(m), transforms: new Float64Array(6 * m), styles: [] as ResolvedStyle[], styleOf: new Uint32Array(m),
+      via: [] as string[], viaEnds: new Uint32Array(m),
+    };
+    this.shapes.forEach((sh, i) => {
+      shapes.tags.push(sh.tag);
+      shapes.ids.push(sh.id);
+      shapes.lines[i] = sh.line;
+      shapes.firstSplines[i] = sh.firstSpline;
+      shapes.splineCounts[i] = sh.splineCount;
+      const t = sh.transform;
+      shapes.transforms.set([t.a, t.b, t.c, t.d, t.e, t.f], 6 * i);
+      const key = JSON.stringify(sh.style);
+      let si = styleIndex.get(key);
+      if (si === undefined) {
+        si = shapes.styles.push({ ...sh.style }) - 1;
+        styleIndex.set(key, si);
+      }
+      shapes.styleOf[i] = si;
+      shapes.via.push(...sh.via);
+      shapes.viaEnds[i] = shapes.via.length;
+    });
+
+    const uses: number[] = [], originalEnds: number[] = [];
+    let originalLength = 0;
+    for (const src of this.sources) for (const o of src.original) originalLength += o.length;
+    const sources = {
+      elements: new Uint32Array(m), uses: new Uint32Array(0), useEnds: new Uint32Array(m),
+      original: new Float64Array(originalLength), originalEnds: new Uint32Array(0), originalCounts: new Uint32Array(m),
+    };
+    let o = 0;
+    this.sources.forEach((src, i) => {
+      sources.elements[i] = at(src.element);
+      for (const { use, ref } of src.uses) uses.push(at(use), at(ref));
+      sources.useEnds[i] = uses.length;
+      for (const pts of src.original) {
+        sources.original.set(pts, o);
+        o += pts.length;
+        originalEnds.push(o);
+      }
+      sources.originalCounts[i] = originalEnds.length;
+    });
+    sources.uses = Uint32Array.from(uses);
+    sources.originalEnds = Uint32Array.from(originalEnds);
+
+    return {
+      markup: serialize(this.dom),
+      splines,
+      shapes,
+      sources,
+      warnings: this.warnings.map((w) => ({ ...w })),
+      width: this.width,
+      height: this.height,
+      viewBox: this.viewBox && [...this.viewBox],
+      bounds: this.bounds && [...this.bounds],
+    };
+  }
+
+  /**
+   * Rebuilds a document from {@link SvgDocument.toTransfer}'s data (after `structuredClone` or
+   * `postMessage`): same splines, shapes, warnings and export as the original. Throws
+   * SplinekitError('invalid-input') for data that does not fit its markup.
+   */
+  static fromTransfer(t: SvgDocumentTransfer): SvgDocument {
+    const dom = parseXML(t.markup, 'transferred document');
+    const elements = elementsInOrder(dom.documentElement!);
+    const at = (i: number): Element => {
+      const el = elements[i];
+      if (!el) throw new SplinekitError('invalid-input', `fromTransfer: element ${i} is not in the markup (${elements.length} elements)`);
+      return el;
+    };
+    const m = t.shapes.tags.length;
+    if (t.sources.elements.length !== m) {
+      throw new SplinekitError('invalid-input', `fromTransfer: ${m} shapes but ${t.sources.elements.length} sources`);
+    }
+    const sp = t.splines;
+    const splines: Spline[] = [];
+    for (let k = 0, p = 0, q = 0; k < sp.pointEnds.length; k++) {
+      const continuity: ContinuityTag[] = [];
+      for (; q < sp.tagEnds[k]; q++) continuity.push({ kind: CONTINUITY_KINDS[sp.tagKinds[q]], ratio: sp.tagRatios[q], angle: sp.tagAngles[q] });
+      splines.push({ closed: sp.closed[k] === 1, points: sp.points.slice(p, sp.pointEnds[k]), continuity });
+      p = sp.pointEnds[k];
+    }
+    const sh = t.shapes, src = t.sources;
+    const shapes: SvgShape[] = [];
+    const sources: ShapeSource[] = [];
+    for (let i = 0, v = 0, u = 0, e = 0, o = 0; i < m; i++) {
+      const x = sh.transforms.subarray(6 * i, 6 * i + 6);
+      shapes.push({
+        tag: sh.tags[i],
+        id: sh.ids[i],
+        line: sh.lines[i],
+        firstSpline: sh.firstSplines[i],
+        splineCount: sh.splineCounts[i],
+        transform: { a: x[0], b: x[1], c: x[2], d: x[3], e: x[4], f: x[5] },
+        style: { ...sh.styles[sh.styleOf[i]] },
+        via: sh.via.slice(v, sh.viaEnds[i]),
+      });
+      v = sh.viaEnds[i];
+      const uses: ShapeSource['uses'] = [];
+      for (; u + 1 < src.useEnds[i]; u += 2) uses.push({ use: at(src.uses[u]), ref: at(src.uses[u + 1]) });
+      u = src.useEnds[i];
+      const original: Float64Array[] = [];
+      for (; e < src.originalCounts[i]; e++) {
+        original.push(src.original.slice(o, src.originalEnds[e]));
+        o = src.originalEnds[e];
+      }
+      sources.push({ uses, element: at(src.elements[i]), original });
+    }
+    return new SvgDocument({
+      dom,
+      splines,
+      shapes,
+      sources,
+      warnings: t.warnings,
+      width: t.width,
+      height: t.height,
+      viewBox: t.viewBox,
+      bounds: t.bounds,
+    });
   }
 
   /** The drawing's size: the diagonal of its bounds (1 when it has no curves). Tolerances scale with it. */
@@ -437,6 +684,17 @@ export class SvgDocument {
 function serialize(out: Document): string {
   const xml = new XMLSerializer().serializeToString(out as unknown as Parameters<XMLSerializer['serializeToString']>[0]);
   return xml.startsWith('<?xml') ? xml : `<?xml version="1.0" encoding="UTF-8"?>\n${xml}`;
+}
+
+/** The elements under `root` (itself included) in document (pre-)order. */
+function elementsInOrder(root: Element): Element[] {
+  const out: Element[] = [];
+  const visit = (el: Element): void => {
+    out.push(el);
+    for (let c = el.firstChild; c; c = c.nextSibling) if (c.nodeType === 1) visit(c as Element);
+  };
+  visit(root);
+  return out;
 }
 
 /** Maps every element of `a` to the element at the same place in `b` (a structural copy of a). */

@@ -1,9 +1,9 @@
-import { DOMParser } from '@xmldom/xmldom';
 import { SplinekitError } from '../core/errors.js';
 import { SplineSet, type ContinuityOptions } from '../spline/spline-set.js';
 import type { Spline } from '../spline/spline.js';
 import { SvgDocument, type ShapeSource, type SvgShape, type SvgWarning } from './document.js';
 import { expandEntities } from './entities.js';
+import { parseXML } from './xml.js';
 import { IDENTITY, multiply, parseTransform, transformPoints, translation, viewBoxTransform, type Matrix } from './matrix.js';
 import { pathDataToSplines, type RawSpline } from './path-data.js';
 import { circlePath, ellipseElementPath, length, linePath, polyPath, rectPath, type Viewport } from './shapes.js';
@@ -111,24 +111,6 @@ function decode(input: string | Uint8Array | ArrayBuffer, name: string, maxBytes
     throw new SplinekitError('invalid-svg', `${name}: binary data, not an SVG (XML) file`);
   }
   return text;
-}
-
-function parseXML(text: string, name: string): Document {
-  try {
-    const dom = new DOMParser({
-      onError: (level: string, message: string) => {
-        if (level !== 'warning') throw new Error(message);
-      },
-    }).parseFromString(text, 'image/svg+xml');
-    if (!dom.documentElement) throw new Error('no root element');
-    return dom as unknown as Document;
-  } catch (err) {
-    const reason = (err instanceof Error ? err.message : String(err))
-      .split('\n')[0]
-      .replace(/^.*caused Error: /, '')
-      .replace(/^element parse error: Error: /, '');
-    throw new SplinekitError('invalid-svg', `${name}: not well-formed XML: ${reason}`, { cause: err });
-  }
 }
 
 const UNITS: Record<string, number> = { '': 1, px: 1, pt: 4 / 3, pc: 16, mm: 96 / 25.4, cm: 96 / 2.54, in: 96, em: 16, ex: 8 };

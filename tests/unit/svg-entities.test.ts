@@ -4,43 +4,11 @@
 // bombs, <use> doubling, deep nesting) are in bad-input.test.ts, through the API and the CLI.
 import { beforeAll, describe, expect, test } from 'vitest';
 import { SplinekitError, expandEntities, init, parseSVG } from '../../src/index.js';
-import { useDoubling } from './helpers.js';
+import { ILLUSTRATOR_BODY, ILLUSTRATOR_HEAD, useDoubling } from './helpers.js';
 
 beforeAll(async () => {
   await init();
 });
-
-// The head of an Illustrator 16 "SVG 1.1" export, as it writes it.
-const ILLUSTRATOR_HEAD = `<?xml version="1.0" encoding="utf-8"?>
-<!-- Generator: Adobe Illustrator 16.0.0, SVG Export Plug-In . SVG Version: 6.00 Build 0)  -->
-<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd" [
-	<!ENTITY ns_extend "http://ns.adobe.com/Extensibility/1.0/">
-	<!ENTITY ns_ai "http://ns.adobe.com/AdobeIllustrator/10.0/">
-	<!ENTITY ns_graphs "http://ns.adobe.com/Graphs/1.0/">
-	<!ENTITY ns_vars "http://ns.adobe.com/Variables/1.0/">
-	<!ENTITY ns_imrep "http://ns.adobe.com/ImageReplacement/1.0/">
-	<!ENTITY ns_sfw "http://ns.adobe.com/SaveForWeb/1.0/">
-	<!ENTITY ns_custom "http://ns.adobe.com/GenericCustomNamespace/1.0/">
-	<!ENTITY ns_adobe_xpath "http://ns.adobe.com/XPath/1.0/">
-	<!ENTITY ns_svg "http://www.w3.org/2000/svg">
-	<!ENTITY ns_xlink "http://www.w3.org/1999/xlink">
-]>`;
-const ILLUSTRATOR_BODY = `
-<svg version="1.1" id="Layer_1" xmlns:x="&ns_extend;" xmlns:i="&ns_ai;" xmlns:graph="&ns_graphs;"
-	 xmlns="&ns_svg;" xmlns:xlink="&ns_xlink;" x="0px" y="0px" width="200px" height="100px"
-	 viewBox="0 0 200 100" enable-background="new 0 0 200 100" xml:space="preserve">
-<switch>
-	<foreignObject requiredExtensions="&ns_ai;" x="0" y="0" width="1" height="1">
-		<i:pgfRef  xlink:href="#adobe_illustrator_pgf"></i:pgfRef>
-	</foreignObject>
-	<g i:extraneous="self">
-		<path fill="#D84A38" d="M20,80 C20,20 80,20 80,80 Z"/>
-		<circle fill="none" stroke="#000000" stroke-width="2" cx="140" cy="50" r="30"/>
-		<rect x="10" y="10" width="20" height="10"/>
-	</g>
-</switch>
-<i:pgf  id="adobe_illustrator_pgf"><![CDATA[ eJzs &ns_svg; stays as it is ]]></i:pgf>
-</svg>`;
 
 describe('internal DTD entities', () => {
   test('an Illustrator "SVG 1.1" export opens and draws what the same file with its entities written out draws', () => {

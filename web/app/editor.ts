@@ -15,7 +15,7 @@ import { loadSession, saveSession, type SavedSession } from './autosave.js';
 import { OpenDocumentCommand } from './commands.js';
 import { download } from './download.js';
 import { History } from './history.js';
-import { fetchBytes, importSVG, readFile } from './loader.js';
+import { fetchBytes, openSVG, readFile } from './loader.js';
 import { ModeRegistry, type ModeContext } from './modes.js';
 import { EditorState, type LoadedDocument } from './state.js';
 import { messageOf } from './errors.js';
@@ -96,7 +96,7 @@ export class Editor {
     this.state.setBusy(`Opening ${name}…`);
     try {
       await nextPaint();
-      const loaded = importSVG(bytes, name, options.hash);
+      const loaded = await openSVG(bytes, name, options.hash);
       this.show(loaded, options.undoable);
       return true;
     } catch (err) {

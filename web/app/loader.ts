@@ -1,11 +1,16 @@
-import { DEFAULT_MAX_BYTES, SplinekitError, parseSVG } from '../../src/index.js';
+import { DEFAULT_MAX_BYTES, SplinekitError, SvgDocument, parseSVG } from '../../src/index.js';
+import { primeLiveMarkup } from '../view2d/svg-layer.js';
 import { contentHash } from './autosave.js';
+import { importFailure } from './import-failure.js';
+import type { ImportReply, ImportRequest } from './import-protocol.js';
 import type { LoadedDocument } from './state.js';
 import { messageOf } from './errors.js';
+import { WorkerClient } from './worker-client.js';
 
 /**
- * Parses SVG bytes into a document, timing the import. `hash` identifies the content for
- * autosave (default: computed from the bytes). Throws an Error with a user-facing message.
+ * Parses SVG bytes into a document on the main thread, timing the import. `hash` identifies the
+ * content for autosave (default: computed from the bytes). Throws an Error with a user-facing
+ * message. The editor uses {@link openSVG}; this is its fallback when no worker can run.
  */
 export function importSVG(bytes: Uint8Array, file: string, hash = contentHash(bytes)): LoadedDocument {
   const t0 = performance.now();
@@ -13,9 +18,50 @@ export function importSVG(bytes: Uint8Array, file: string, hash = contentHash(by
     const doc = parseSVG(bytes, { name: file });
     return { doc, file, importMs: performance.now() - t0, bytes: bytes.length, source: bytes, hash };
   } catch (err) {
-    if (err instanceof SplinekitError) throw new Error(err.message, { cause: err });
-    throw new Error(`${file}: could not be read as SVG (${messageOf(err)})`, { cause: err });
+    throw importFailure(err, file);
   }
+}
+
+let worker: WorkerClient<ImportRequest, ImportReply> | null = null;
+let workerBroken = typeof Worker === 'undefined';
+
+/**
+ * Parses SVG bytes into a document like {@link importSVG}, but in a Web Worker (web/app/import.worker.ts),
+ * which also writes the markup the 2D view mounts, so a large file does not freeze the page; the
+ * page only rebuilds the document from the worker's data (and primes the view with its markup).
+ * Errors have the same messages as importSVG. When a worker cannot be started, parses here instead.
+ */
+export async function openSVG(bytes: Uint8Array, file: string, hash = contentHash(bytes)): Promise<LoadedDocument> {
+  if (workerBroken) return importSVG(bytes, file, hash);
+  const t0 = performance.now();
+  let reply: ImportReply;
+  try {
+    worker ??= new WorkerClient<ImportRequest, ImportReply>(
+      () => new Worker(new URL('./import.worker.ts', import.meta.url), { type: 'module', name: 'splinekit-import' }),
+      'import',
+    );
+    // Sent as a copy: the editor keeps `bytes` (autosave, revert).
+    reply = await worker.request({ type: 'import', bytes, name: file });
+  } catch (err) {
+    // The worker itself failed (could not start, crashed): open the file here instead.
+    console.warn(`splinekit: the import worker failed (${messageOf(err)}); importing on the main thread`);
+    workerBroken = true;
+    worker?.terminate(new Error('import worker abandoned'));
+    worker = null;
+    return importSVG(bytes, file, hash);
+  }
+  if (reply.type === 'failed') {
+    throw new Error(reply.message, { cause: reply.code ? new SplinekitError(reply.code, reply.message) : undefined });
+  }
+  if (reply.type !== 'done') throw new Error(`${file}: the import worker answered ${reply.type}`);
+  let doc: SvgDocument;
+  try {
+    doc = SvgDocument.fromTransfer(reply.transfer);
+  } catch (err) {
+    throw importFailure(err, file);
+  }
+  if (reply.markup !== null) primeLiveMarkup(doc, reply.markup);
+  return { doc, file, importMs: performance.now() - t0, bytes: bytes.length, source: bytes, hash };
 }
 
 /** Reads a user-chosen file (file input, drop). Oversized files are refused before they are read. */

@@ -45,6 +45,18 @@ interface Target {
  * editor, and references outside the file (links, images, stylesheets on the network) are
  * dropped, so opening it fetches nothing — as when the browser shows a file as an image.
  */
+/** Live markup written elsewhere (the import worker) for a document, consumed by its first mount. */
+const primed = new WeakMap<SvgDocument, string>();
+
+/**
+ * Gives the view `doc`'s live markup, `doc.toSVG({ rewrite: 'all', tagShapes: true })`, written
+ * elsewhere (the import worker writes it off the main thread), so that mounting `doc` does not
+ * write it again. Used once, by the next mount of this very document.
+ */
+export function primeLiveMarkup(doc: SvgDocument, markup: string): void {
+  primed.set(doc, markup);
+}
+
 export class SvgLayer {
   /** The element holding the drawing (under the WebGL canvas, which stays transparent). */
   readonly host: HTMLDivElement;
@@ -130,7 +142,9 @@ export class SvgLayer {
 
   private mount(doc: SvgDocument): void {
     this.unmount();
-    const parsed = new DOMParser().parseFromString(doc.toSVG({ rewrite: 'all', tagShapes: true }), 'image/svg+xml');
+    const markup = primed.get(doc) ?? doc.toSVG({ rewrite: 'all', tagShapes: true });
+    primed.delete(doc);
+    const parsed = new DOMParser().parseFromString(markup, 'image/svg+xml');
     const source = parsed.documentElement;
     if (source.localName !== 'svg') throw new Error('its markup did not parse back');
     DOMPurify.sanitize(source, {
