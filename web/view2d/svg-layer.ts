@@ -32,6 +32,18 @@ interface Target {
   follow: ((m: Matrix | null) => void) | null;
 }
 
+/** Live markup written elsewhere (the import worker) for a document, consumed by its first mount. */
+const primed = new WeakMap<SvgDocument, string>();
+
+/**
+ * Gives the view `doc`'s live markup, `doc.toSVG({ rewrite: 'all', tagShapes: true })`, written
+ * elsewhere (the import worker writes it off the main thread), so that mounting `doc` does not
+ * write it again. Used once, by the next mount of this very document.
+ */
+export function primeLiveMarkup(doc: SvgDocument, markup: string): void {
+  primed.set(doc, markup);
+}
+
 /**
  * The document drawn by the browser from its spline model: the markup the model keeps (gradients,
  * patterns, clip paths, masks, markers, dashes, group opacity, filters, text, images: everything
@@ -45,18 +57,6 @@ interface Target {
  * editor, and references outside the file (links, images, stylesheets on the network) are
  * dropped, so opening it fetches nothing — as when the browser shows a file as an image.
  */
-/** Live markup written elsewhere (the import worker) for a document, consumed by its first mount. */
-const primed = new WeakMap<SvgDocument, string>();
-
-/**
- * Gives the view `doc`'s live markup, `doc.toSVG({ rewrite: 'all', tagShapes: true })`, written
- * elsewhere (the import worker writes it off the main thread), so that mounting `doc` does not
- * write it again. Used once, by the next mount of this very document.
- */
-export function primeLiveMarkup(doc: SvgDocument, markup: string): void {
-  primed.set(doc, markup);
-}
-
 export class SvgLayer {
   /** The element holding the drawing (under the WebGL canvas, which stays transparent). */
   readonly host: HTMLDivElement;
