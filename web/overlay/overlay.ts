@@ -59,6 +59,29 @@ function markerMaterial(marker: Marker, sizePx: number, pixelRatio: number): Sha
   });
 }
 
+/**
+ * Walks a document's control points in the order the overlay draws them: each anchor (x, y, its
+ * spline and point index) and each handle with the anchor it belongs to (the one before it for
+ * point 3k+1, after it for 3k+2).
+ */
+function forEachControl(
+  doc: SvgDocument,
+  anchor: (x: number, y: number, spline: number, point: number) => void,
+  handle: (hx: number, hy: number, ax: number, ay: number) => void,
+): void {
+  doc.splines.forEach((s, si) => {
+    const p = s.points, n = p.length / 2;
+    for (let i = 0; i < n; i++) {
+      if (i % 3 === 0) {
+        anchor(p[2 * i], p[2 * i + 1], si, i);
+        continue;
+      }
+      const a = i % 3 === 1 ? i - 1 : (i + 1) % n;
+      handle(p[2 * i], p[2 * i + 1], p[2 * a], p[2 * a + 1]);
+    }
+  });
+}
+
 const ANCHOR_PX = 8;
 const HANDLE_PX = 6;
 const SELECTED_PX = 17;
@@ -120,21 +143,20 @@ export class ControlOverlay {
     this.doc = doc;
     const anchorXY: number[] = [], spl: number[] = [], pt: number[] = [];
     const handleXYZ: number[] = [], lineXYZ: number[] = [];
-    doc?.splines.forEach((s, si) => {
-      const p = s.points, n = p.length / 2;
-      for (let i = 0; i < n; i++) {
-        if (i % 3 === 0) {
-          anchorXY.push(p[2 * i], p[2 * i + 1]);
+    if (doc) {
+      forEachControl(
+        doc,
+        (x, y, si, i) => {
+          anchorXY.push(x, y);
           spl.push(si);
           pt.push(i);
-          continue;
-        }
-        // Handle i belongs to the anchor before it (i = 3k+1) or after it (i = 3k+2).
-        const a = i % 3 === 1 ? i - 1 : (i + 1) % n;
-        handleXYZ.push(p[2 * i], p[2 * i + 1], 0);
-        lineXYZ.push(p[2 * a], p[2 * a + 1], 0, p[2 * i], p[2 * i + 1], 0);
-      }
-    });
+        },
+        (hx, hy, ax, ay) => {
+          handleXYZ.push(hx, hy, 0);
+          lineXYZ.push(ax, ay, 0, hx, hy, 0);
+        },
+      );
+    }
     this.anchorXY = Float64Array.from(anchorXY);
     this.anchorSpline = Int32Array.from(spl);
     this.anchorPoint = Int32Array.from(pt);
@@ -170,25 +192,24 @@ export class ControlOverlay {
     const handles = this.handles.geometry.getAttribute('position') as Float32BufferAttribute;
     const lines = this.lines.geometry.getAttribute('position') as Float32BufferAttribute;
     const a = anchors.array as Float32Array, h = handles.array as Float32Array, l = lines.array as Float32Array;
-    let ai = 0, hi = 0, li = 0;
-    for (const s of doc.splines) {
-      const p = s.points, n = p.length / 2;
-      for (let i = 0; i < n; i++) {
-        if (i % 3 === 0) {
-          this.anchorXY[2 * ai] = a[3 * ai] = p[2 * i];
-          this.anchorXY[2 * ai + 1] = a[3 * ai + 1] = p[2 * i + 1];
-          ai++;
-          continue;
-        }
-        // As in setDocument: handle i and the line to its anchor.
-        const k = i % 3 === 1 ? i - 1 : (i + 1) % n;
-        h[3 * hi] = p[2 * i];
-        h[3 * hi + 1] = p[2 * i + 1];
-        l.set([p[2 * k], p[2 * k + 1], 0, p[2 * i], p[2 * i + 1], 0], 6 * li);
+    let ai = 0, hi = 0;
+    forEachControl(
+      doc,
+      (x, y) => {
+        this.anchorXY[2 * ai] = a[3 * ai] = x;
+        this.anchorXY[2 * ai + 1] = a[3 * ai + 1] = y;
+        ai++;
+      },
+      (hx, hy, ax, ay) => {
+        h[3 * hi] = hx;
+        h[3 * hi + 1] = hy;
+        l[6 * hi] = ax;
+        l[6 * hi + 1] = ay;
+        l[6 * hi + 3] = hx;
+        l[6 * hi + 4] = hy;
         hi++;
-        li++;
-      }
-    }
+      },
+    );
     anchors.needsUpdate = handles.needsUpdate = lines.needsUpdate = true;
     this.setSelection(this.selection);
     this.setHover(this.hover);

@@ -40,8 +40,8 @@ export class LineLayer {
     // (so dashes run on along a polyline).
     const paths = new Map<number, { path: Path2D; x: number; y: number }>();
     const xy = this.xy, rgb = this.rgb;
+    const q = (v: number) => Math.max(0, Math.min(63, Math.round(v * 63)));
     for (let s = 0; s < this.segments; s++) {
-      const q = (v: number) => Math.max(0, Math.min(63, Math.round(v * 63)));
       const c = 6 * s;
       const key = (q((rgb[c] + rgb[c + 3]) / 2) << 12) | (q((rgb[c + 1] + rgb[c + 4]) / 2) << 6) | q((rgb[c + 2] + rgb[c + 5]) / 2);
       const x0 = xy[4 * s] * scale + ox, y0 = xy[4 * s + 1] * scale + oy, x1 = xy[4 * s + 2] * scale + ox, y1 = xy[4 * s + 3] * scale + oy;

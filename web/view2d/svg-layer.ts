@@ -154,8 +154,7 @@ export class SvgLayer {
       ADD_ATTR: [SHAPE_ATTRIBUTE],
       FORBID_TAGS: ['foreignObject', 'script'],
     });
-    dropOverflowingNumbers(source);
-    dropExternalReferences(source);
+    cleanMarkup(source);
     const svg = document.importNode(source, true) as unknown as SVGSVGElement;
     // The view decides what is visible; the file's own size and placement no longer apply.
     for (const name of ['x', 'y', 'transform']) svg.removeAttribute(name);
@@ -215,36 +214,37 @@ const NUMERIC_ATTRIBUTES = new Set([
 /** Largest finite 32-bit float. */
 const FLOAT32_MAX = 3.4028234663852886e38;
 
-/**
- * Removes numeric attributes with a number a 32-bit float cannot hold (the model leaves such
- * shapes in the markup as they are and warns): the browser would refuse them with a console
- * error and draw nothing of them anyway.
- */
-function dropOverflowingNumbers(root: Element): void {
-  for (const el of [root, ...Array.from(root.getElementsByTagName('*'))]) {
-    for (const attr of Array.from(el.attributes)) {
-      if (!NUMERIC_ATTRIBUTES.has(attr.localName)) continue;
-      const numbers = attr.value.match(/[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?/g) ?? [];
-      if (numbers.some((n) => !(Math.abs(Number(n)) <= FLOAT32_MAX))) el.removeAttributeNode(attr);
-    }
-  }
-}
-
 /** A reference inside the file (`#id`) or embedded in it (a data: image). */
 const LOCAL_REFERENCE = /^\s*(#|data:image\/)/i;
 
+/** CSS with its references outside the file removed (url(…) to other places, @import). */
+function localCSS(text: string): string {
+  return text.replace(/@import[^;]*;?/gi, '').replace(/url\(\s*(['"]?)([^)'"]*)\1\s*\)/gi, (all, _q: string, target: string) => (LOCAL_REFERENCE.test(target) ? all : 'none'));
+}
+
 /**
- * Removes references to anything outside the file: href attributes that are not `#id` or a data:
- * image, url(…) to other places and @import in style attributes and style sheets.
+ * One pass over the sanitised markup, before it enters the page:
+ * - references to anything outside the file go (href attributes that are not `#id` or a data:
+ *   image, url(…) to other places and @import in style attributes and style sheets), so opening
+ *   a file fetches nothing;
+ * - numeric attributes with a number a 32-bit float cannot hold go (the model leaves such shapes
+ *   as they are and warns): the browser would refuse them with a console error and draw nothing of
+ *   them anyway. The path data of shapes drawn from the splines is not read: it is rewritten next.
  */
-function dropExternalReferences(root: Element): void {
-  const css = (text: string) =>
-    text.replace(/@import[^;]*;?/gi, '').replace(/url\(\s*(['"]?)([^)'"]*)\1\s*\)/gi, (all, _q: string, target: string) => (LOCAL_REFERENCE.test(target) ? all : 'none'));
+function cleanMarkup(root: Element): void {
   for (const el of [root, ...Array.from(root.getElementsByTagName('*'))]) {
+    const fromSplines = el.hasAttribute(SHAPE_ATTRIBUTE);
     for (const attr of Array.from(el.attributes)) {
-      if (attr.localName === 'href' && !LOCAL_REFERENCE.test(attr.value)) el.removeAttributeNode(attr);
-      else if (attr.localName === 'style' && /url\(|@import/i.test(attr.value)) attr.value = css(attr.value);
+      const name = attr.localName;
+      if (name === 'href') {
+        if (!LOCAL_REFERENCE.test(attr.value)) el.removeAttributeNode(attr);
+      } else if (name === 'style') {
+        if (/url\(|@import/i.test(attr.value)) attr.value = localCSS(attr.value);
+      } else if (NUMERIC_ATTRIBUTES.has(name) && !(fromSplines && name === 'd')) {
+        const numbers = attr.value.match(/[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?/g) ?? [];
+        if (numbers.some((n) => !(Math.abs(Number(n)) <= FLOAT32_MAX))) el.removeAttributeNode(attr);
+      }
     }
-    if (el.localName === 'style' && el.textContent) el.textContent = css(el.textContent);
+    if (el.localName === 'style' && el.textContent) el.textContent = localCSS(el.textContent);
   }
 }

@@ -36,13 +36,21 @@ const STRIDE = 4;
 /** Screen length (pixels) a drawn segment aims at: curves small on screen get fewer segments. */
 const SEGMENT_PX = 4;
 
+/** The samples drawn along each spline (indices into the per-curve samples), and the segment count. */
+interface Picks {
+  doc: SvgDocument;
+  perCurve: number;
+  scale: number;
+  lines: number[][];
+  total: number;
+}
+
 /**
- * Polylines through samples along each spline (closed splines wrap around), as segments
- * x0 y0 x1 y1 with a color per end. Each curve gets as many drawn points as its control polygon
- * at rest is long on screen in SEGMENT_PX steps (scale: pixels per unit), at least one and at most
- * every STRIDE-th sample, so a detailed drawing seen whole draws no more than the screen shows.
+ * Which samples to draw: each curve gets as many points as its control polygon at rest is long on
+ * screen in SEGMENT_PX steps (scale: pixels per unit), at least one and at most every STRIDE-th
+ * sample, so a detailed drawing seen whole draws no more than the screen shows.
  */
-function sampleSegments(doc: SvgDocument, perCurve: number, scale: number, at: SampleField, color: (curve: number, sample: number, out: Float32Array, at: number) => void) {
+function pickSamples(doc: SvgDocument, perCurve: number, scale: number): Picks {
   const most = Math.ceil(perCurve / STRIDE);
   const picks: number[][] = [];
   let total = 0, curve = 0;
@@ -61,11 +69,20 @@ function sampleSegments(doc: SvgDocument, perCurve: number, scale: number, at: S
     picks.push(line);
     if (line.length >= 2) total += s.closed ? line.length : line.length - 1;
   }
+  return { doc, perCurve, scale, lines: picks, total };
+}
+
+/**
+ * Polylines through the picked samples along each spline (closed splines wrap around), as
+ * segments x0 y0 x1 y1 with a color per end.
+ */
+function sampleSegments(picks: Picks, at: SampleField, color: (curve: number, sample: number, out: Float32Array, at: number) => void) {
+  const { doc, perCurve, total } = picks;
   const segments = new Float32Array(total * 4), colors = new Float32Array(total * 6);
   let seg = 0;
   let xy = new Float32Array(0);
   doc.splines.forEach((s, i) => {
-    const line = picks[i], m = line.length;
+    const line = picks.lines[i], m = line.length;
     if (m < 2) return;
     // Each picked point once, then the segments between consecutive ones.
     if (xy.length < 2 * m) xy = new Float32Array(2 * m);
@@ -144,9 +161,15 @@ export class CurveLayers {
     this.canvas.draw();
   }
 
-  /** The scale samples are picked for: the top of the current zoom level's range. */
-  private get pickScale(): number {
-    return 2 ** (this.zoomLevel + 1);
+  /** The samples to draw for `data`'s drawing at the current zoom level (picked again when either changes). */
+  private picked: Picks | null = null;
+
+  private picksFor(data: CurveLayerData): Picks {
+    // The scale samples are picked for: the top of the current zoom level's range.
+    const scale = 2 ** (this.zoomLevel + 1);
+    const p = this.picked;
+    if (p && p.doc === data.doc && p.perCurve === data.perCurve && p.scale === scale) return p;
+    return (this.picked = pickSamples(data.doc, data.perCurve, scale));
   }
 
   /** Drawn segment counts per layer (for tests). */
@@ -162,7 +185,7 @@ export class CurveLayers {
     let max = (1e-6 * data.doc.size) ** 2;
     if (heat) for (const e of heat) if (e > max) max = e;
     const plain = rgb(SKIN_COLORS.target);
-    const { segments, colors } = sampleSegments(data.doc, data.perCurve, this.pickScale, data.target, (curve, _k, out, at) => {
+    const { segments, colors } = sampleSegments(this.picksFor(data), data.target, (curve, _k, out, at) => {
       // The square root: colors go with the curve's RMS distance, so one bad curve does not
       // leave all the others at the bottom of the scale.
       if (heat) HEAT.srgbInto(Math.sqrt(heat[curve] / max), out, at);
@@ -191,7 +214,7 @@ export class CurveLayers {
   private setField(data: CurveLayerData | null): void {
     const f = data?.field;
     if (!data || !f) return this.field.hide();
-    const { segments, colors } = sampleSegments(data.doc, data.perCurve, this.pickScale, fieldOf(f.positions), (_c, k, out, at) => WEIGHT.srgbInto(f.weights[k], out, at));
+    const { segments, colors } = sampleSegments(this.picksFor(data), fieldOf(f.positions), (_c, k, out, at) => WEIGHT.srgbInto(f.weights[k], out, at));
     this.field.set(segments, colors);
   }
 
