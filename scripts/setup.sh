@@ -41,8 +41,10 @@ if [ ${#missing[@]} -gt 0 ]; then
   step "installing system packages: ${missing[*]}"
   sudo_cmd=()
   [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
+  # Another apt (an unattended upgrade, a second checkout's setup) may hold the lock: wait for it.
+  apt_wait=(-o DPkg::Lock::Timeout=600)
+  "${sudo_cmd[@]}" apt-get "${apt_wait[@]}" update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get "${apt_wait[@]}" install -y -qq "${missing[@]}" >/dev/null
 fi
 
 # ---- npm dependencies (re-installed when package-lock.json changes) ---------------------------
