@@ -36,6 +36,7 @@ export {
   type SvgStats,
   type SvgWarning,
 } from './svg/document.js';
+export { formatNumber, fixedFormatter } from './svg/path-data.js';
 export type { ResolvedStyle } from './svg/style.js';
 export type { Matrix } from './svg/matrix.js';
 export { IDENTITY_MATRIX, type AffineMatrix } from './core/affine.js';

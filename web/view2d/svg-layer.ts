@@ -1,6 +1,6 @@
 import DOMPurify from 'dompurify';
 import { messageOf } from '../app/errors.js';
-import { SHAPE_ATTRIBUTE, type Matrix, type SvgDocument } from '../../src/index.js';
+import { SHAPE_ATTRIBUTE, fixedFormatter, formatNumber, type Matrix, type SvgDocument } from '../../src/index.js';
 import type { Viewport } from './viewport.js';
 
 /** A shape the drawing leaves out (its path is left empty), or the whole drawing when it cannot be shown. */
@@ -107,8 +107,8 @@ export class SvgLayer {
         this.unmount();
         return { shapes: 0, written: 0, ms: performance.now() - t0, skipped: [{ element: '<svg>', reason: `the drawing could not be shown: ${messageOf(err)}` }] };
       }
-      const q = 10 ** Math.ceil(Math.log10(1e7 / doc.size));
-      this.format = (v) => String(Math.round(v * q) / q);
+      const decimals = Math.ceil(Math.log10(1e7 / doc.size));
+      this.format = decimals > 9 ? formatNumber : fixedFormatter(Math.max(0, decimals));
     }
     this.doc = doc;
     const { written, skipped } = this.write(doc);
@@ -179,7 +179,7 @@ export class SvgLayer {
     for (const t of this.targets) {
       const splines = doc.splinesOf(t.shape);
       if (sameSplines(splines, t.drawn)) continue;
-      t.drawn = splines.map((s) => Float64Array.from(s.points));
+      remember(t, splines);
       if (!splines.every((s) => s.points.every(Number.isFinite))) {
         const shape = doc.shapes[t.shape];
         skipped.push({ element: `<${shape.tag}${shape.id ? ` id="${shape.id}"` : ''}>${shape.line ? ` at line ${shape.line}` : ''}`, reason: 'a coordinate is not a finite number' });
@@ -192,6 +192,16 @@ export class SvgLayer {
     }
     return { written, skipped };
   }
+}
+
+/** Keeps a copy of the points a path is written from, in the arrays it had when the sizes match. */
+function remember(t: Target, splines: readonly { points: ArrayLike<number> }[]): void {
+  if (t.drawn.length !== splines.length) t.drawn = new Array<Float64Array>(splines.length);
+  splines.forEach((s, k) => {
+    const kept = t.drawn[k];
+    if (kept?.length === s.points.length) kept.set(s.points);
+    else t.drawn[k] = Float64Array.from(s.points);
+  });
 }
 
 function sameSplines(splines: readonly { points: ArrayLike<number> }[], drawn: readonly Float64Array[]): boolean {
