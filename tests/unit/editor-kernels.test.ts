@@ -2,10 +2,11 @@
 // cubic point kernel both 2D drawing paths use, Surface mode's list of mesh files, the in-flight tracker the test hook waits on, and
 // the request/response worker client (here over a stand-in worker).
 import { beforeAll, describe, expect, test } from 'vitest';
-import { Bezier, init, meshFormatOf } from '../../src/index.js';
+import { Bezier, DEFAULT_MAX_BYTES, init, meshFormatOf } from '../../src/index.js';
 import { InFlight } from '../../web/app/in-flight.js';
 import { WorkerClient } from '../../web/app/worker-client.js';
-import { MESH_ACCEPT, isMeshFile } from '../../web/modes/surface/mesh-files.js';
+import { readFile } from '../../web/app/loader.js';
+import { MESH_ACCEPT, isMeshFile, surfaceFileLimit } from '../../web/modes/surface/mesh-files.js';
 import { cubicPointInto } from '../../web/view2d/cubic.js';
 import { cubicAt } from './helpers.js';
 
@@ -194,5 +195,14 @@ describe('mesh files', () => {
     expect(isMeshFile('drawing.svg')).toBe(false);
     expect(isMeshFile('ply')).toBe(false);
     expect(isMeshFile('mesh.obj.svg')).toBe(false);
+  });
+
+  test('a mesh over the SVG limit (a 2M-triangle scan) is read; an SVG of that size is refused naming the limit', async () => {
+    const size = DEFAULT_MAX_BYTES + 1024;
+    const mesh = new File([new Uint8Array(size)], 'scan.ply');
+    const drawing = new File([new Uint8Array(size)], 'big.svg', { type: 'image/svg+xml' });
+    expect((await readFile(mesh, surfaceFileLimit(mesh))).length).toBe(size);
+    await expect(readFile(drawing, surfaceFileLimit(drawing))).rejects.toThrow(/big\.svg: 32\.0 MiB is larger than the 32 MiB limit/);
+    await expect(readFile(mesh)).rejects.toThrow(/scan\.ply: .* 32 MiB limit/);
   });
 });

@@ -64,10 +64,13 @@ export async function openSVG(bytes: Uint8Array, file: string, hash = contentHas
   return { doc, file, importMs: performance.now() - t0, bytes: bytes.length, source: bytes, hash };
 }
 
-/** Reads a user-chosen file (file input, drop). Oversized files are refused before they are read. */
-export async function readFile(file: File): Promise<Uint8Array> {
-  if (file.size > DEFAULT_MAX_BYTES) {
-    throw new Error(`${file.name}: ${(file.size / 2 ** 20).toFixed(1)} MiB is larger than the ${DEFAULT_MAX_BYTES / 2 ** 20} MiB limit`);
+/**
+ * Reads a user-chosen file (file input, drop). Files over `maxBytes` (by default the SVG limit;
+ * meshes pass theirs) are refused before they are read.
+ */
+export async function readFile(file: File, maxBytes = DEFAULT_MAX_BYTES): Promise<Uint8Array> {
+  if (file.size > maxBytes) {
+    throw new Error(`${file.name}: ${(file.size / 2 ** 20).toFixed(1)} MiB is larger than the ${(maxBytes / 2 ** 20).toFixed(0)} MiB limit`);
   }
   try {
     return new Uint8Array(await file.arrayBuffer());

@@ -17,7 +17,7 @@ import { MeshSessions } from './mesh-sessions.js';
 import { SurfacePicking } from './picking.js';
 import type { SurfaceSession } from './session.js';
 import { SURFACE_COLORS, SurfaceLayers } from './surface-layers.js';
-import { MESH_ACCEPT } from './mesh-files.js';
+import { MESH_ACCEPT, isSvgFile, surfaceFileLimit } from './mesh-files.js';
 import { SurfacePanel, type SurfaceTool } from './surface-panel.js';
 import { SurfaceStatus } from './surface-status.js';
 import { loadPrefs, saveDrawing, savePrefs, saveSurfaceSession, type SurfacePrefs } from './storage.js';
@@ -182,12 +182,12 @@ export class SurfaceMode implements Mode, SurfaceContext {
     if (!ctx) return false;
     let bytes: Uint8Array;
     try {
-      bytes = await readFile(file);
+      bytes = await readFile(file, surfaceFileLimit(file));
     } catch (err) {
       ctx.state.setError(messageOf(err));
       return false;
     }
-    if (/\.svg$/i.test(file.name) || file.type === 'image/svg+xml') {
+    if (isSvgFile(file)) {
       this.placement.use(file.name, new TextDecoder().decode(bytes), true);
       this.placement.start();
       return true;
