@@ -179,6 +179,15 @@ test('Surface mode: draw a spline on a mesh, drag an anchor, undo and redo', asy
   expect(s.splines).toHaveLength(0);
   await expect(page.getByTestId('surface-status-mesh')).toContainText('20,480 triangles');
   await expect(page.getByTestId('mode-keys')).toContainText('Alt+click a curve');
+  // Headless Chromium renders WebGL in software: the view leaves multisampling out there (it would
+  // double the frame time of a big mesh).
+  const gl = await page.evaluate(() => {
+    const ctx = (document.querySelector('[data-testid="view3d"]') as HTMLCanvasElement).getContext('webgl2')!;
+    const info = ctx.getExtension('WEBGL_debug_renderer_info');
+    return { renderer: String(info ? ctx.getParameter(info.UNMASKED_RENDERER_WEBGL) : ''), antialias: ctx.getContextAttributes()?.antialias };
+  });
+  expect(gl.renderer).toMatch(/SwiftShader/i);
+  expect(gl.antialias).toBe(false);
 
   s = await drawSpline(page, SPOTS);
   expect(s.splines).toHaveLength(1);

@@ -19,6 +19,7 @@ import {
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { Emitter } from '../app/events.js';
 import { TriangleBVH, type BVHArrays, type RayHit } from './bvh.js';
+import { softwareWebGL } from './gl-info.js';
 import { FrameScheduler } from '../app/frames.js';
 
 /** A pointer on the 3D view: canvas CSS pixels plus the modifier keys. */
@@ -108,7 +109,8 @@ export class View3D {
   private gesture: { id: number; sx: number; sy: number; claimed: boolean; moved: boolean } | null = null;
 
   constructor(readonly container: HTMLElement) {
-    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, powerPreference: 'high-performance' });
+    // Multisampled on a GPU; not on a software rasteriser, where it would double a big mesh's frame.
+    this.renderer = new WebGLRenderer({ antialias: !softwareWebGL(), preserveDrawingBuffer: true, powerPreference: 'high-performance' });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.renderer.setClearColor(new Color(BACKGROUND), 1);
     const canvas = this.renderer.domElement;
