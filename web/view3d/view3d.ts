@@ -57,6 +57,8 @@ export interface View3DInput {
 export interface View3DEvents extends Record<string, unknown> {
   /** The camera moved or the canvas was resized. */
   view: null;
+  /** A frame is about to be drawn: the moment to update what it shows (within it, asking for a render asks for the next frame). */
+  prerender: number;
   /** A frame was drawn. */
   render: number;
 }
@@ -102,6 +104,7 @@ export class View3D {
   private shown: ShownMesh | null = null;
   private bvh: TriangleBVH | null = null;
   private readonly frames = new FrameScheduler((time) => {
+    this.events.emit('prerender', time);
     this.render();
     this.events.emit('render', time);
   });

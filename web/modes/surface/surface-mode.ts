@@ -72,7 +72,8 @@ export class SurfaceMode implements Mode, SurfaceContext {
   private readonly gestures = new SurfaceGestures(this, this.traces, this.picking, this.edits, this.placement);
   private readonly status = new SurfaceStatus();
   private readonly autosave = new DebouncedSave(AUTOSAVE_MS, () => this.saveNow());
-  private frame = 0;
+  /** The layers are drawn again just before the view's next frame (its 'prerender'). */
+  private drawPending = false;
   private off: (() => void)[] = [];
   private sessionOff: (() => void)[] = [];
 
@@ -90,6 +91,13 @@ export class SurfaceMode implements Mode, SurfaceContext {
       this._view.events.on('view', () => {
         this.layers?.resized();
         this.requestDraw();
+      });
+      // The layers are updated in the frame that draws them: updating them in a frame of their own
+      // would make the view draw twice (with a 2M-triangle mesh on a software renderer, a second each).
+      this._view.events.on('prerender', () => {
+        if (!this.drawPending) return;
+        this.drawPending = false;
+        this.draw();
       });
     }
     ctx.view.setVisible(false);
@@ -135,8 +143,7 @@ export class SurfaceMode implements Mode, SurfaceContext {
     this.autosave.flush();
     for (const off of this.off) off();
     this.off = [];
-    cancelAnimationFrame(this.frame);
-    this.frame = 0;
+    this.drawPending = false;
     this._view?.setVisible(false);
     if (this._view) this._view.input = null;
     document.body.classList.remove('mode-surface');
@@ -399,11 +406,9 @@ export class SurfaceMode implements Mode, SurfaceContext {
   // ---- drawing ---------------------------------------------------------------------------------
 
   requestDraw(): void {
-    if (this.frame || !this._view) return;
-    this.frame = requestAnimationFrame(() => {
-      this.frame = 0;
-      this.draw();
-    });
+    if (!this._view) return;
+    this.drawPending = true;
+    this._view.requestRender();
   }
 
   private draw(): void {
@@ -439,7 +444,6 @@ export class SurfaceMode implements Mode, SurfaceContext {
     const g = this.gestures.gesture;
     if (g && (g.kind === 'rotate' || g.kind === 'scale')) put(g.center, SURFACE_COLORS.center, 12, 'disc');
     layers.setMarkers(markers, view.worldPerPixel(1) * 7);
-    view.requestRender();
   }
 
   // ---- panel and status ------------------------------------------------------------------------
