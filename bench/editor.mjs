@@ -39,6 +39,98 @@ function bigSvg(n) {
  * Opens `file` through the file input of a fresh page and returns how long it took to be drawn
  * (wall clock, ms), the longest main-thread stall on the way (ms) and the editor's state.
  */
+/** Starts recording frames: the largest gap between two is the longest the page froze. */
+function startStallProbe(page) {
+  return page.evaluate(() => new Promise((r) => {
+    const probe = { max: 0, last: 0, on: true };
+    window.__stallProbe = probe;
+    const tick = () => {
+      const now = performance.now();
+      if (probe.last) probe.max = Math.max(probe.max, now - probe.last);
+      probe.last = now;
+      if (probe.on) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(() => {
+      tick();
+      r();
+    });
+  }));
+}
+
+/** Stops the probe; returns the longest gap between frames (ms), the one still open included. */
+function stopStallProbe(page) {
+  return page.evaluate(() => {
+    const probe = window.__stallProbe;
+    probe.on = false;
+    return Math.max(probe.max, performance.now() - probe.last);
+  });
+}
+
+/** Triangles of the generated mesh opened in Surface mode (issue 17: opened in ≤ 3 s). */
+export const BIG_MESH_TRIANGLES = 2_000_000;
+
+/**
+ * A bumpy torus of 2·n² triangles (n² vertices) as binary little-endian PLY: a closed, smooth
+ * surface, so that nothing but its size matters.
+ */
+function bigMeshPLY(n) {
+  const nv = n * n, nf = 2 * nv;
+  const header = Buffer.from(`ply\nformat binary_little_endian 1.0\nelement vertex ${nv}\nproperty float x\nproperty float y\nproperty float z\nelement face ${nf}\nproperty list uchar int vertex_indices\nend_header\n`);
+  const body = Buffer.alloc(12 * nv + 13 * nf);
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < n; j++) {
+      const u = (2 * Math.PI * i) / n, v = (2 * Math.PI * j) / n, r = 0.35 * (1 + 0.05 * Math.sin(7 * u) * Math.sin(5 * v));
+      const o = 12 * (i * n + j);
+      body.writeFloatLE((1 + r * Math.cos(v)) * Math.cos(u), o);
+      body.writeFloatLE((1 + r * Math.cos(v)) * Math.sin(u), o + 4);
+      body.writeFloatLE(r * Math.sin(v), o + 8);
+    }
+  }
+  const id = (i, j) => (i % n) * n + (j % n);
+  let o = 12 * nv;
+  const tri = (a, b, c) => {
+    body[o] = 3;
+    body.writeInt32LE(a, o + 1);
+    body.writeInt32LE(b, o + 5);
+    body.writeInt32LE(c, o + 9);
+    o += 13;
+  };
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < n; j++) {
+      tri(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+      tri(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  }
+  return Buffer.concat([header, body]);
+}
+
+/**
+ * Opens `file` (a mesh) in Surface mode once its sample is shown: the time from choosing the file
+ * to the mesh drawn (the mode shows the file, then two frames), and the longest stall meanwhile.
+ */
+async function openMeshTimed(browser, port, file, name) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  try {
+    const page = await context.newPage();
+    await page.goto(`http://127.0.0.1:${port}/`);
+    await page.waitForFunction(() => window.splinekitEditor !== undefined);
+    await page.evaluate(() => window.splinekitEditor.ready);
+    await page.getByRole('button', { name: 'Surface', exact: true }).click();
+    await page.waitForFunction(() => window.splinekitEditor.surface.state().file !== null, undefined, { timeout: 120_000 });
+    await startStallProbe(page);
+    const t0 = performance.now();
+    await page.getByTestId('surface-mesh-input').setInputFiles(file);
+    await page.waitForFunction((f) => window.splinekitEditor.surface.state().file === f, name, { timeout: 300_000 });
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(r, 0)))));
+    const drawn = performance.now() - t0;
+    const stall = await stopStallProbe(page);
+    const state = await page.evaluate(() => window.splinekitEditor.surface.state());
+    return { drawn, stall, state };
+  } finally {
+    await context.close();
+  }
+}
+
 async function openTimed(browser, port, file, name) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   try {
@@ -49,32 +141,13 @@ async function openTimed(browser, port, file, name) {
       await window.splinekitEditor.ready;
       return performance.now();
     });
-    // Frames from here on: the largest gap between two is the longest the page froze.
-    await page.evaluate(() => new Promise((r) => {
-      const probe = { max: 0, last: 0, on: true };
-      window.__stallProbe = probe;
-      const tick = (t) => {
-        const now = performance.now();
-        if (probe.last) probe.max = Math.max(probe.max, now - probe.last);
-        probe.last = now;
-        if (probe.on) requestAnimationFrame(tick);
-        void t;
-      };
-      requestAnimationFrame((t) => {
-        tick(t);
-        r();
-      });
-    }));
+    await startStallProbe(page);
     const t0 = performance.now();
     await page.locator('[data-testid="file-input"]').setInputFiles(file);
     await page.waitForFunction((f) => window.splinekitEditor.state().file === f, name, { timeout: 300_000 });
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(r, 0)))));
     const drawn = performance.now() - t0;
-    const stall = await page.evaluate(() => {
-      const probe = window.__stallProbe;
-      probe.on = false;
-      return Math.max(probe.max, performance.now() - probe.last);
-    });
+    const stall = await stopStallProbe(page);
     const state = await page.evaluate(() => window.splinekitEditor.state());
     return { shown, drawn, stall, state };
   } finally {
@@ -99,7 +172,7 @@ async function openTimed(browser, port, file, name) {
  * - `node_import_ms`: parseSVG of the same text in Node, median after warm-up, as the baseline.
  * `root` is the repository, `data` the shared test data; `port` the preview server's port.
  */
-export async function editorBenchmarks(root, data, { runs = 5, bigRuns = 2, port = Number(process.env.SPLINEKIT_E2E_PORT ?? 4317), log = () => {} } = {}) {
+export async function editorBenchmarks(root, data, { runs = 5, bigRuns = 2, meshRuns = 3, port = Number(process.env.SPLINEKIT_E2E_PORT ?? 4317), log = () => {} } = {}) {
   // The bundle must be current: setup.sh --web rebuilds it only when its sources changed.
   execFileSync('bash', [join(root, 'scripts/setup.sh'), '--web'], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
   const file = join(data, EDITOR_IMPORT_FILE);
@@ -120,12 +193,15 @@ export async function editorBenchmarks(root, data, { runs = 5, bigRuns = 2, port
     preview: { host: '127.0.0.1', port, strictPort: true },
   });
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: CHROMIUM_ARGS });
-  const shown = [], imported = [], drawn = [], stalls = [], bigDrawn = [], bigStalls = [];
+  const shown = [], imported = [], drawn = [], stalls = [], bigDrawn = [], bigStalls = [], meshDrawn = [], meshStalls = [];
   const bigDir = mkdtempSync(join(tmpdir(), 'splinekit-bench-'));
   const bigFile = join(bigDir, 'generated_100k_paths.svg');
   const bigText = bigSvg(BIG_PATHS);
   writeFileSync(bigFile, bigText);
   const bigSegments = parseSVG(bigText).stats().segments;
+  const meshFile = join(bigDir, 'generated_2m_triangles.ply');
+  const meshBytes = bigMeshPLY(Math.round(Math.sqrt(BIG_MESH_TRIANGLES / 2)));
+  writeFileSync(meshFile, meshBytes);
   try {
     for (let run = 0; run < runs; run++) {
       const r = await openTimed(browser, port, file, name);
@@ -142,6 +218,13 @@ export async function editorBenchmarks(root, data, { runs = 5, bigRuns = 2, port
       bigDrawn.push(r.drawn);
       bigStalls.push(r.stall);
       log(`editor run ${run + 1}/${bigRuns} (${BIG_PATHS} paths): drawn ${bigDrawn.at(-1).toFixed(0)} ms, longest stall ${bigStalls.at(-1).toFixed(0)} ms`);
+    }
+    for (let run = 0; run < meshRuns; run++) {
+      const r = await openMeshTimed(browser, port, meshFile, 'generated_2m_triangles.ply');
+      if (r.state.meshInfo?.faces !== BIG_MESH_TRIANGLES) throw new Error(`editor bench: the generated mesh showed ${r.state.meshInfo?.faces} triangles, not ${BIG_MESH_TRIANGLES}`);
+      meshDrawn.push(r.drawn);
+      meshStalls.push(r.stall);
+      log(`editor run ${run + 1}/${meshRuns} (${BIG_MESH_TRIANGLES} triangles): drawn ${meshDrawn.at(-1).toFixed(0)} ms, longest stall ${meshStalls.at(-1).toFixed(0)} ms`);
     }
   } finally {
     await browser.close();
@@ -161,6 +244,11 @@ export async function editorBenchmarks(root, data, { runs = 5, bigRuns = 2, port
     big_bytes: bigText.length,
     big_drawn_ms: median(bigDrawn),
     big_stall_ms: median(bigStalls),
+    mesh_runs: meshRuns,
+    mesh_triangles: BIG_MESH_TRIANGLES,
+    mesh_bytes: meshBytes.length,
+    mesh_drawn_ms: median(meshDrawn),
+    mesh_stall_ms: median(meshStalls),
     node_import_ms: median(node),
   };
   result.import_browser_over_node = result.import_ms / result.node_import_ms;
@@ -184,12 +272,16 @@ ${r.runs} runs in a new browser context (cold cache). Medians:
 |---:|---:|
 | ${f(r.big_drawn_ms)} | ${f(r.big_stall_ms)} |
 
+| generated mesh (${r.mesh_triangles ?? ''} triangles, binary PLY, ${f((r.mesh_bytes ?? 0) / 2 ** 20, 1)} MiB) in Surface mode, chosen to drawn ms | its longest stall ms |
+|---:|---:|
+| ${f(r.mesh_drawn_ms ?? NaN)} | ${f(r.mesh_stall_ms ?? NaN)} |
+
 "Sample drawn" is the page's clock when the editor reports its starting sample drawn (budget 2 s);
 the import is the editor's own measurement (the status bar's "imported in … ms", ${r.segments}
 segments; parsed in a worker, it includes handing the document to the page and rebuilding it there); "chosen to drawn" runs from handing the file to the file input until the editor shows
 it and two frames have been presented; the "longest stall" is the largest gap between two
 animation frames in that time (how long the page froze; the generated file's are medians of
-${r.big_runs} runs). The end-to-end tests check what these mean (the sample's
+${r.big_runs} runs; the mesh's of ${r.mesh_runs} runs, opened after Surface mode showed its sample, goal ≤ 3 s). The end-to-end tests check what these mean (the sample's
 colors on the canvas, the file's counts as Node parses them), not how long they take.
 `;
 }
