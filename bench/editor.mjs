@@ -35,10 +35,6 @@ function bigSvg(n) {
   return `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ${side * 10} ${side * 10}">\n${paths.join('\n')}\n</svg>\n`;
 }
 
-/**
- * Opens `file` through the file input of a fresh page and returns how long it took to be drawn
- * (wall clock, ms), the longest main-thread stall on the way (ms) and the editor's state.
- */
 /** Starts recording frames: the largest gap between two is the longest the page froze. */
 function startStallProbe(page) {
   return page.evaluate(() => new Promise((r) => {
@@ -131,6 +127,10 @@ async function openMeshTimed(browser, port, file, name) {
   }
 }
 
+/**
+ * Opens `file` through the file input of a fresh page and returns how long it took to be drawn
+ * (wall clock, ms), the longest main-thread stall on the way (ms) and the editor's state.
+ */
 async function openTimed(browser, port, file, name) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   try {
