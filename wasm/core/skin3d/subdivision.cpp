@@ -1,0 +1,188 @@
+#include "subdivision.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace splinekit::skin3d {
+
+namespace {
+
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// Sharpness of a child half-edge: one level less, never below 0; +∞ stays +∞.
+double decay(double s) { return std::isinf(s) ? s : std::max(0.0, s - 1.0); }
+
+// Row builder: accumulates weight·(parent vertex) terms of one child vertex.
+struct Rows {
+  std::vector<Eigen::Triplet<double>> t;
+  void add(int row, int col, double w) {
+    if (w != 0.0) t.emplace_back(row, col, w);
+  }
+  // w · (face point of f) = w/n · Σ face vertices.
+  void add_face(const PolyMesh& m, int row, int f, double w) {
+    const int n = m.face_size(f);
+    for (int c = m.face_start[f]; c < m.face_start[f + 1]; ++c) add(row, m.face_vertices[c], w / n);
+  }
+};
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// One level
+// ---------------------------------------------------------------------------------------------
+
+void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_topology) {
+  const int nv = p.vertex_count, ne = p.edge_count(), nf = p.face_count();
+  const int edge0 = nv, face0 = nv + ne;
+  Rows rows;
+  rows.t.reserve(size_t(nv) * 16 + size_t(ne) * 8 + p.face_vertices.size());
+
+  // Face points.
+  for (int f = 0; f < nf; ++f) rows.add_face(p, face0 + f, f, 1.0);
+
+  // Edge points.
+  for (int e = 0; e < ne; ++e) {
+    const int row = edge0 + e, a = p.edge_vertices[2 * e], b = p.edge_vertices[2 * e + 1];
+    const double s = p.boundary_edge(e) ? 1.0 : std::min(p.edge_sharpness[e], 1.0);  // weight of the sharp rule
+    rows.add(row, a, s * 0.5 + (1 - s) * 0.25);
+    rows.add(row, b, s * 0.5 + (1 - s) * 0.25);
+    if (s < 1) {
+      rows.add_face(p, row, p.edge_faces[2 * e], 0.25 * (1 - s));
+      rows.add_face(p, row, p.edge_faces[2 * e + 1], 0.25 * (1 - s));
+    }
+  }
+
+  // Vertex points.
+  for (int v = 0; v < nv; ++v) {
+    const int e_begin = p.vertex_edge_start[v], e_end = p.vertex_edge_start[v + 1];
+    const int f_begin = p.vertex_face_start[v], f_end = p.vertex_face_start[v + 1];
+    const int valence = e_end - e_begin, faces = f_end - f_begin;
+    if (valence == 0) {  // a vertex no face uses: carried along unchanged
+      rows.add(v, v, 1.0);
+      continue;
+    }
+    int sharp = 0, boundary = 0, ends[2] = {-1, -1};
+    double sharpness = 0;
+    for (int q = e_begin; q < e_end; ++q) {
+      const int e = p.vertex_edges[q];
+      boundary += p.boundary_edge(e);
+      if (p.edge_sharpness[e] > 0) {
+        if (sharp < 2) ends[sharp] = p.other_end(e, v);
+        ++sharp;
+        sharpness += p.edge_sharpness[e];
+      }
+    }
+    const bool corner = sharp >= 3 || (boundary > 0 && faces == 1);
+    // Weight of the crease/corner rule against the smooth rule (1 on boundaries: s̄ = +∞).
+    const double alpha = corner && boundary > 0 ? 1.0 : sharp >= 2 ? std::min(1.0, sharpness / sharp) : 0.0;
+    if (corner) {
+      rows.add(v, v, alpha);
+    } else if (sharp == 2) {
+      rows.add(v, v, alpha * 0.75);
+      rows.add(v, ends[0], alpha * 0.125);
+      rows.add(v, ends[1], alpha * 0.125);
+    }
+    if (alpha < 1) {
+      const double n = valence, w = 1 - alpha;
+      rows.add(v, v, w * (n - 2) / n);
+      for (int q = e_begin; q < e_end; ++q) rows.add(v, p.other_end(p.vertex_edges[q], v), w / (n * n));
+      for (int q = f_begin; q < f_end; ++q) rows.add_face(p, v, p.vertex_faces[q], w / (n * n));
+    }
+  }
+  S.resize(nv + ne + nf, nv);
+  S.setFromTriplets(rows.t.begin(), rows.t.end());
+
+  // Child faces: corner j of face f → (vertex j, edge point j→j+1, face point, edge point j−1→j).
+  child = PolyMesh{};
+  child.vertex_count = nv + ne + nf;
+  child.face_start.resize(p.face_vertices.size() + 1);
+  child.face_vertices.resize(4 * p.face_vertices.size());
+  for (int f = 0, q = 0; f < nf; ++f) {
+    const int base = p.face_start[f], n = p.face_size(f);
+    for (int j = 0; j < n; ++j, ++q) {
+      int* quad = &child.face_vertices[4 * size_t(q)];
+      quad[0] = p.face_vertices[base + j];
+      quad[1] = edge0 + p.corner_edge[base + j];
+      quad[2] = face0 + f;
+      quad[3] = edge0 + p.corner_edge[base + (j + n - 1) % n];
+      child.face_start[q] = 4 * q;
+    }
+  }
+  child.face_start.back() = int(child.face_vertices.size());
+  if (!with_topology) return;
+  build_topology(child);  // cannot fail: the child of a manifold mesh is manifold
+  for (int e = 0; e < child.edge_count(); ++e) {
+    if (child.boundary_edge(e)) continue;
+    // Halves of a parent edge join a vertex point (< nv) to that edge's point.
+    const int a = child.edge_vertices[2 * e], b = child.edge_vertices[2 * e + 1];
+    if (a < nv && b >= edge0 && b < face0) child.edge_sharpness[e] = decay(p.edge_sharpness[b - edge0]);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The chain
+// ---------------------------------------------------------------------------------------------
+
+void Subdivision::build(const PolyMesh& cage, int levels) {
+  cage_vertices_ = cage.vertex_count;
+  steps_.assign(size_t(levels), RowSparse());
+  scratch_.clear();
+  PolyMesh current = cage, next;
+  for (int j = 0; j < levels; ++j) {
+    refine_once(current, steps_[j], next, j + 1 < levels);
+    current = std::move(next);
+    next = PolyMesh{};
+  }
+  refined_ = std::move(current);
+}
+
+void Subdivision::apply(const double* cage, int cols, double* refined) {
+  if (scratch_.size() + 1 != steps_.size() || (!scratch_.empty() && scratch_[0].cols() != cols)) {
+    scratch_.clear();
+    for (size_t j = 0; j + 1 < steps_.size(); ++j) scratch_.emplace_back(cols, steps_[j].rows());
+  }
+  const double* in = cage;
+  for (size_t j = 0; j < steps_.size(); ++j) {
+    const bool last = j + 1 == steps_.size();
+    double* out = last ? refined : scratch_[j].data();
+    Eigen::Map<const RowMatrix> X(in, steps_[j].cols(), cols);
+    Eigen::Map<RowMatrix> Y(out, steps_[j].rows(), cols);
+    Y.noalias() = steps_[j] * X;
+    in = out;
+  }
+}
+
+Eigen::MatrixXd Subdivision::apply_transpose(const Eigen::MatrixXd& in) const {
+  Eigen::MatrixXd x = in;
+  for (size_t j = steps_.size(); j-- > 0;) x = steps_[j].transpose() * x;
+  return x;
+}
+
+Eigen::SparseMatrix<double> Subdivision::gram(const Eigen::VectorXd& D) const {
+  Eigen::SparseMatrix<double> A(D.size(), D.size());
+  A.reserve(Eigen::VectorXi::Ones(D.size()));
+  for (Eigen::Index r = 0; r < D.size(); ++r) A.insert(r, r) = D[r];
+  for (size_t j = steps_.size(); j-- > 0;) {
+    const Eigen::SparseMatrix<double> S = steps_[j];  // column-major copy for the products
+    const Eigen::SparseMatrix<double> AS = A * S;
+    A = Eigen::SparseMatrix<double>(S.transpose()) * AS;
+  }
+  return A;
+}
+
+RowSparse Subdivision::compose() const {
+  RowSparse M(cage_vertices_, cage_vertices_);
+  M.setIdentity();
+  for (const RowSparse& S : steps_) M = RowSparse(S * M);
+  return M;
+}
+
+size_t Subdivision::memory_bytes() const {
+  size_t bytes = 0;
+  for (const RowSparse& S : steps_)
+    bytes += size_t(S.nonZeros()) * (sizeof(double) + sizeof(int)) + size_t(S.outerSize() + 1) * sizeof(int);
+  return bytes;
+}
+
+}  // namespace splinekit::skin3d
