@@ -80,7 +80,7 @@ export function poseMatrix(h: Handle3D, p: HandlePose, out: Float64Array, offset
 }
 
 /** The transforms the rig takes for a pose: 12 numbers (3×4, row-major) per handle. */
-export function poseTransforms(handles: readonly Handle3D[], pose: readonly HandlePose[], out = new Float64Array(12 * handles.length)): Float64Array {
+export function poseTransforms(handles: readonly Handle3D[], pose: readonly HandlePose[], out: Float64Array = new Float64Array(12 * handles.length)): Float64Array {
   handles.forEach((h, i) => poseMatrix(h, pose[i], out, 12 * i));
   return out;
 }
