@@ -117,7 +117,6 @@ test('3D Skin: handles on the surface, a gizmo drag poses it, undo restores the 
   expect(Math.abs(t[1]) + Math.abs(t[2])).toBeLessThan(1e-9);
   expect(s.pose[0].q).toEqual([0, 0, 0, 1]);
   expect(s.pose[1].t).toEqual([0, 0, 0]);
-  await docsScreenshot(page, 'skin3d.png');
 
   // The surface follows: around the right hand by about the handle's move, the feet barely.
   const near = meanMove(rest, s.surface, (v) => v[0] > 2.2);
@@ -130,8 +129,10 @@ test('3D Skin: handles on the surface, a gizmo drag poses it, undo restores the 
   expect(s.posedCage).not.toEqual(s.restCage);
   const posedSurface = s.surface, posedCage = s.posedCage;
 
-  // The overlays: errors and naive numbers appear, the legend shows.
+  // The overlays: the error colours with their legend (the README's picture), the naive numbers.
   await page.keyboard.press('e');
+  await settled(page);
+  await docsScreenshot(page, 'skin3d.png');
   await page.keyboard.press('n');
   s = await settled(page);
   expect(s.overlays.errors && s.overlays.naive).toBe(true);

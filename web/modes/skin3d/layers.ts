@@ -103,6 +103,7 @@ export class Skin3DLayers {
   private naive: OverlaySurface | null = null;
   private readonly markers = new MarkerLayer(20, 0.45);
   private surfaceColors: Float32Array | null = null;
+  private surfaceColor = 0xc4bcaf;
 
   constructor(readonly view: View3D) {
     this.group.name = 'skin3d';
@@ -167,6 +168,9 @@ export class Skin3DLayers {
     }
     const on = errors !== null;
     if (material.vertexColors !== on) {
+      // The colours as they are (not tinted by the surface's own colour), and back.
+      if (on) this.surfaceColor = material.color.getHex();
+      material.color.set(on ? 0xffffff : this.surfaceColor);
       material.vertexColors = on;
       material.needsUpdate = true;
     }

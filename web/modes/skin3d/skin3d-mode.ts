@@ -124,6 +124,7 @@ export class Skin3DMode implements Mode {
       exportGLTF: () => void this.exportGLTF(),
     });
     ctx.panel.append(...this.panel.sections);
+    ctx.view.container.append(this.panel.legend);
     this.timeline = new Timeline(this.keyframes.actions);
     ctx.dock.append(this.timeline.el);
     document.body.classList.add('mode-skin3d');
@@ -150,6 +151,7 @@ export class Skin3DMode implements Mode {
       ctx.view.setVisible(true);
       ctx.view.requestRender();
     }
+    this.panel?.legend.remove();
     this.panel = null;
     this.timeline = null;
     this.ctx = null;
@@ -585,7 +587,8 @@ export class Skin3DMode implements Mode {
     const diag = this.diagonal(s);
     let max = 0;
     if (data) {
-      for (const list of [data.fitError, data.naiveError]) for (let i = 0; i < list.length; i++) max = Math.max(max, list[i]);
+      // The scale covers the surfaces shown: the fit, and the naive one when it is on.
+      for (const list of f.naive ? [data.fitError, data.naiveError] : [data.fitError]) for (let i = 0; i < list.length; i++) max = Math.max(max, list[i]);
     }
     // The scale's top in % of the diagonal, rounded up to 1, 2 or 5: both maps share it.
     const top = niceCeil(max / diag) * diag;

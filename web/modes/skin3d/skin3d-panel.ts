@@ -58,7 +58,8 @@ export class Skin3DPanel {
   private readonly gizmo: ReturnType<typeof segmented<GizmoMode>>;
   private readonly hint = h('p', { class: 'hint', 'data-testid': 'skin3d-hint' });
   private readonly overlayBoxes = new Map<Overlay3D, HTMLInputElement>();
-  private readonly legend = h('div', { class: 'skin3d-legend', 'data-testid': 'skin3d-legend', hidden: true });
+  /** The colour scale of the error map: the mode shows it over the 3D view. */
+  readonly legend = h('div', { class: 'skin3d-legend', 'data-testid': 'skin3d-legend', hidden: true });
   private readonly legendMax = h('span', {});
   private readonly errorFacts = facts(['Fit RMS', 'Naive RMS']);
   private readonly resetButton: HTMLButtonElement;
@@ -111,7 +112,7 @@ export class Skin3DPanel {
     this.legend.append(
       h('div', { class: 'ramp', style: `background:${rampGradient()}` }),
       h('div', { class: 'ticks' }, h('span', {}, '0'), this.legendMax),
-      h('div', { class: 'caption' }, 'distance to the target, % of the bounding-box diagonal'),
+      h('div', { class: 'caption' }, 'distance to the target (% of the bounding-box diagonal)'),
     );
 
     this.objButton = button('Posed cage (OBJ)', 'Download the posed cage as OBJ (crease tags kept)', () => actions.exportOBJ(), 'small', 'skin3d-export-obj');
@@ -128,7 +129,7 @@ export class Skin3DPanel {
         this.rigFacts.el,
       ),
       section('Handles', this.hint, this.gizmo.el, h('div', { class: 'row' }, this.resetButton, this.removeButton)),
-      section('Overlays', overlays, this.legend, this.errorFacts.el),
+      section('Overlays', overlays, this.errorFacts.el),
       section('Export', h('div', { class: 'row' }, this.objButton, this.gltfButton)),
     ];
   }
@@ -164,7 +165,7 @@ export class Skin3DPanel {
     if (building) {
       const pct = Math.round(100 * s.fraction);
       this.progressBar.style.width = `${pct}%`;
-      this.progressLabel.textContent = `Solving BBW weights… ${pct}%`;
+      this.progressLabel.textContent = pct > 0 ? `Solving BBW weights… ${pct}%` : 'Solving BBW weights…';
       this.progress.setAttribute('aria-valuenow', String(pct));
     }
     this.rigError.hidden = s.phase !== 'error';
