@@ -10,6 +10,9 @@ export interface KeyedSession<S extends Animated<unknown>> {
   setTime(time: number, options?: { live?: boolean }): void;
 }
 
+/** The timeline's keys (K, I, Shift+I, [, ], Home, End in both skin modes). */
+export type TimelineKey = 'play' | 'add-key' | 'delete-key' | 'previous-key' | 'next-key' | 'start' | 'end';
+
 /** What a mode lends the keyframe controls. */
 export interface KeyframeHost<S extends Animated<unknown>> {
   session(): KeyedSession<S> | null;
@@ -52,6 +55,16 @@ export class KeyframeControl<S extends Animated<unknown>> {
 
   get playing(): boolean {
     return this.playback.playing;
+  }
+
+  /** Does what a timeline key asks. */
+  runKey(key: TimelineKey): void {
+    const s = this.host.session();
+    if (key === 'play') this.togglePlay();
+    else if (key === 'add-key') this.addKeyframe();
+    else if (key === 'delete-key') this.deleteKeyframe();
+    else if (key === 'previous-key' || key === 'next-key') this.jump(key === 'next-key' ? 1 : -1);
+    else this.seek(key === 'start' ? 0 : (s?.spec.duration ?? 0), false);
   }
 
   addKeyframe(): void {

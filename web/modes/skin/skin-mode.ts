@@ -349,21 +349,13 @@ export class SkinMode implements Mode {
         return true;
       }
       case 'play':
-        this.keyframes.togglePlay();
-        return true;
       case 'add-key':
-        this.keyframes.addKeyframe();
-        return true;
       case 'delete-key':
-        this.keyframes.deleteKeyframe();
-        return true;
       case 'previous-key':
       case 'next-key':
-        this.keyframes.jump(action === 'next-key' ? 1 : -1);
-        return true;
       case 'start':
       case 'end':
-        this.keyframes.seek(action === 'start' ? 0 : (s?.spec.duration ?? 0), false);
+        this.keyframes.runKey(action);
         return true;
     }
   }

@@ -9,7 +9,7 @@ export const SKIN3D_KEYS = [
   ['Delete · 0', 'remove the selected handle · reset the pose'],
   ['C · T · N · E', 'cage · target · naive · error colours'],
   ['I · Shift+I', 'key the pose · delete the key at the playhead'],
-  ['K · [ · ]', 'play/pause · previous, next keyframe'],
+  ['K · [ · ] · Home · End', 'play/pause · previous, next keyframe · start, end'],
   ['Drag elsewhere', 'orbit (right button: pan)'],
 ] as const;
 
@@ -28,7 +28,9 @@ export type Skin3DAction =
   | 'add-key'
   | 'delete-key'
   | 'previous-key'
-  | 'next-key';
+  | 'next-key'
+  | 'start'
+  | 'end';
 
 const KEYS: Record<string, Skin3DAction> = {
   g: 'translate',
@@ -46,6 +48,8 @@ const KEYS: Record<string, Skin3DAction> = {
   i: 'add-key',
   '[': 'previous-key',
   ']': 'next-key',
+  home: 'start',
+  end: 'end',
 };
 
 /** The action of a key press (modifiers other than Shift are the editor's), or null. */

@@ -334,12 +334,18 @@ export class Skin3DSession {
   }
 }
 
-/** The centre of a point set's bounding box (3 numbers). */
-function centre(positions: Float64Array): Float64Array {
+/** The bounding box of points (3 numbers each): min x y z, max x y z. */
+export function boundingBox(positions: Float64Array): { lo: number[]; hi: number[] } {
   const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
   for (let i = 0; i < positions.length; i++) {
     lo[i % 3] = Math.min(lo[i % 3], positions[i]);
     hi[i % 3] = Math.max(hi[i % 3], positions[i]);
   }
+  return { lo, hi };
+}
+
+/** The centre of a point set's bounding box (3 numbers). */
+function centre(positions: Float64Array): Float64Array {
+  const { lo, hi } = boundingBox(positions);
   return Float64Array.from([0, 1, 2].map((k) => (lo[k] + hi[k]) / 2));
 }

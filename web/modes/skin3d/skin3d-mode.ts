@@ -1,5 +1,5 @@
 import { Vector3 } from 'three';
-import { cageToOBJ, parseCage } from '../../../src/index.js';
+import { cageToOBJ, parseCage, type SubdivisionRig } from '../../../src/index.js';
 import { download } from '../../app/download.js';
 import { messageOf } from '../../app/errors.js';
 import { InFlight } from '../../app/in-flight.js';
@@ -16,7 +16,7 @@ import { OpenCageCommand } from './commands.js';
 import { animatedGLTF, type SurfaceFrame } from './export.js';
 import { SKIN3D_KEYS, keyAction3D, type Skin3DAction } from './keymap.js';
 import { SKIN3D_COLORS, Skin3DLayers } from './layers.js';
-import { Skin3DSession, type PoseOverlays } from './session.js';
+import { Skin3DSession, boundingBox, type PoseOverlays } from './session.js';
 import { Skin3DPanel, type CageSample, type GizmoMode, type Overlay3D, type Overlay3DFlags } from './skin3d-panel.js';
 import { EMPTY_SPEC3D, REST_POSE, addHandle3D, isRest, poseAt3D, posedCenter, samePoses, removeHandle3D, setHandlePose, setPose3D, type HandlePose, type Skin3DSpec, type Skin3DWeights } from './spec.js';
 import { Weights3DClient } from './weights-client.js';
@@ -85,6 +85,9 @@ export class Skin3DMode implements Mode {
   private frame = 0;
   private shownSurface: Float64Array | null = null;
   private lastErrors: { fitRms: number; naiveRms: number } | null = null;
+  /** The pose shown is a live one (a gizmo drag, playback): error numbers wait for its end. */
+  private livePose = false;
+  private diagonalOf: { rig: SubdivisionRig; value: number } | null = null;
   private off: (() => void)[] = [];
   private sessionOff: (() => void)[] = [];
   private readonly keyframes = new KeyframeControl<Skin3DSpec>({
@@ -93,7 +96,10 @@ export class Skin3DMode implements Mode {
     busy: () => this.drag !== null,
     execute: (label, after) => this.execute(label, after),
     refresh: () => this.refreshTimeline(),
-    stopped: () => this.requestDraw(),
+    stopped: () => {
+      this.livePose = false;
+      this.requestDraw();
+    },
   });
 
   // ---- Mode ------------------------------------------------------------------------------------
@@ -279,7 +285,10 @@ export class Skin3DMode implements Mode {
           this.refreshPanel();
           this.refreshTimeline();
         }),
-        next.events.on('posed', () => this.requestDraw()),
+        next.events.on('posed', ({ live }) => {
+          this.livePose = live;
+          this.requestDraw();
+        }),
         next.events.on('selection', () => {
           this.refreshPanel();
           this.requestDraw();
@@ -477,17 +486,13 @@ export class Skin3DMode implements Mode {
         return true;
       }
       case 'play':
-        if (!e.repeat) this.keyframes.togglePlay();
-        return true;
       case 'add-key':
-        this.keyframes.addKeyframe();
-        return true;
       case 'delete-key':
-        this.keyframes.deleteKeyframe();
-        return true;
       case 'previous-key':
       case 'next-key':
-        this.keyframes.jump(action === 'next-key' ? 1 : -1);
+      case 'start':
+      case 'end':
+        if (!(action === 'play' && e.repeat)) this.keyframes.runKey(action);
         return true;
     }
   }
@@ -583,7 +588,14 @@ export class Skin3DMode implements Mode {
   private drawOverlays(layers: Skin3DLayers, s: Skin3DSession): void {
     const f = this.overlays;
     const posed = s.spec.handles.length > 0 && !isRest(s.spec.pose);
-    const data: PoseOverlays | null = posed && (f.target || f.naive || f.errors || this.panel) ? s.overlays() : null;
+    // The numbers alone are not worth a naive pose and a target per frame while dragging.
+    const data: PoseOverlays | null = posed && (f.target || f.naive || f.errors || !this.livePose) ? s.overlays() : null;
+    if (!data && posed) {
+      // A live pose with no overlay on: the panel keeps the numbers of the last settled pose.
+      layers.setSurfaceErrors(null, 1);
+      layers.setOverlays(null, null, null, 1);
+      return;
+    }
     const diag = this.diagonal(s);
     let max = 0;
     if (data) {
@@ -599,17 +611,12 @@ export class Skin3DMode implements Mode {
     layers.setOverlays(f.target && data ? data.target : null, f.naive && data ? data.naive : null, f.errors && data ? data.naiveError : null, top || 1);
   }
 
-  /** The bounding-box diagonal of the rest surface (the error scale's unit). */
+  /** The bounding-box diagonal of the rest surface (the error scale's unit), kept per rig. */
   private diagonal(s: Skin3DSession): number {
-    const r = s.rig?.restRefined;
-    if (!r || r.length === 0) return 1;
-    const lo = new Vector3(Infinity, Infinity, Infinity), hi = new Vector3(-Infinity, -Infinity, -Infinity), v = new Vector3();
-    for (let i = 0; i < r.length; i += 3) {
-      v.set(r[i], r[i + 1], r[i + 2]);
-      lo.min(v);
-      hi.max(v);
-    }
-    return hi.distanceTo(lo) || 1;
+    const rig = s.rig;
+    if (!rig) return 1;
+    if (this.diagonalOf?.rig !== rig) this.diagonalOf = { rig, value: boxDiagonal(rig.restRefined) };
+    return this.diagonalOf.value;
   }
 
   private refreshAll(): void {
@@ -694,4 +701,10 @@ export class Skin3DMode implements Mode {
     }
     return null;
   }
+}
+
+/** The diagonal of the bounding box of points (3 numbers each); 1 for none. */
+function boxDiagonal(positions: Float64Array): number {
+  const { lo, hi } = boundingBox(positions);
+  return positions.length > 0 ? Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1 : 1;
 }
