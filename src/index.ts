@@ -59,6 +59,7 @@ export { animatedSVG, interpolateMatrix, poseAt, type AnimationOptions, type Key
 export { parseCage, cageToOBJ, type Cage, type CageCrease } from './skin3d/cage.js';
 export {
   SubdivisionRig,
+  refineCage,
   type Skin3dError,
   type Skin3dMethod,
   type SubdivisionRigOptions,

@@ -72,6 +72,11 @@ export interface Skin3dRigHandle extends EmbindObject {
   creaseEdgesIn(): Int32Array;
   creaseSharpnessIn(): Float64Array;
   setup(levels: number, handleCount: number): number;
+  refineCage(levels: number): number;
+  refinedCagePositions(): Float64Array;
+  refinedCageQuads(): Int32Array;
+  refinedCageCreaseEdges(): Int32Array;
+  refinedCageCreaseSharpness(): Float64Array;
   handles(): Float64Array;
   useShepard(power: number): void;
   bbw(level: number, maxIterations: number, multiplierTolerance: number): number;

@@ -59,17 +59,51 @@ function checkHandles(handles: ArrayLike<number>): number {
   return handles.length / 3;
 }
 
+function checkLevels(levels: number): void {
+  if (!Number.isInteger(levels) || levels < 1 || levels > 4) throw new SplinekitError('invalid-input', `skin3d: levels must be an integer in 1..4, got ${levels}`);
+}
+
+/** A wasm rig handle with the cage's arrays written in. */
+function cageHandle(cage: Cage): Skin3dRigHandle {
+  const h = new (core().Skin3dRigHandle)();
+  h.resize(cage.positions.length / 3, cage.faceIndices.length, cage.faceSizes.length, cage.creases.length);
+  h.positionsIn().set(cage.positions);
+  h.faceSizesIn().set(cage.faceSizes);
+  h.faceIndicesIn().set(cage.faceIndices);
+  const edges = h.creaseEdgesIn(), sharpness = h.creaseSharpnessIn();
+  cage.creases.forEach((c, k) => ((edges[2 * k] = c.a), (edges[2 * k + 1] = c.b), (sharpness[k] = c.sharpness)));
+  return h;
+}
+
+/**
+ * The cage's level-`levels` Catmull-Clark refinement as a cage of its own: all quads, vertices in
+ * the refinement's order (the cage's vertex points first), crease tags with their sharpness
+ * decayed by `levels` (infinitely sharp ones kept). Subdividing it gives the same surface as
+ * subdividing the original `levels` more times.
+ */
+export function refineCage(cage: Cage, levels: number): Cage {
+  checkLevels(levels);
+  const h = cageHandle(cage);
+  try {
+    checkStatus(h.refineCage(levels), 'skin3d', () => h.errorMessage());
+    const quads = Uint32Array.from(h.refinedCageQuads());
+    const edges = h.refinedCageCreaseEdges(), sharpness = h.refinedCageCreaseSharpness();
+    return {
+      positions: h.refinedCagePositions().slice(),
+      faceSizes: new Uint32Array(quads.length / 4).fill(4),
+      faceIndices: quads,
+      creases: Array.from(sharpness, (s, k) => ({ a: edges[2 * k], b: edges[2 * k + 1], sharpness: s })),
+    };
+  } finally {
+    h.delete();
+  }
+}
+
 /** A wasm rig with the cage, levels and handle count set up (weights not yet). */
 function setupHandle(cage: Cage, handleCount: number, levels: number): Skin3dRigHandle {
-  if (!Number.isInteger(levels) || levels < 1 || levels > 4) throw new SplinekitError('invalid-input', `skin3d: levels must be an integer in 1..4, got ${levels}`);
-  const h = new (core().Skin3dRigHandle)();
+  checkLevels(levels);
+  const h = cageHandle(cage);
   try {
-    h.resize(cage.positions.length / 3, cage.faceIndices.length, cage.faceSizes.length, cage.creases.length);
-    h.positionsIn().set(cage.positions);
-    h.faceSizesIn().set(cage.faceSizes);
-    h.faceIndicesIn().set(cage.faceIndices);
-    const edges = h.creaseEdgesIn(), sharpness = h.creaseSharpnessIn();
-    cage.creases.forEach((c, k) => ((edges[2 * k] = c.a), (edges[2 * k + 1] = c.b), (sharpness[k] = c.sharpness)));
     checkStatus(h.setup(levels, handleCount), 'skin3d', () => h.errorMessage());
     return h;
   } catch (err) {

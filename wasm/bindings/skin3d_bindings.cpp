@@ -58,6 +58,39 @@ class Skin3dRigHandle {
     return kOk;
   }
 
+  // The inputs refined `levels` times as a cage of its own (instead of setup): positions,
+  // quads and crease tags (sharpness decayed by `levels`) in refinedCage*().
+  int refineCage(int levels) {
+    if (levels < 1 || levels > 4) return fail("levels must be in 1..4, got " + std::to_string(levels));
+    PolyMesh cage;
+    if (std::string e = make_poly_mesh(int(positions_.size() / 3), face_sizes_.data(), int(face_sizes_.size()),
+                                       face_indices_.data(), cage);
+        !e.empty())
+      return fail(e);
+    std::vector<Crease> creases(crease_sharpness_.size());
+    for (size_t k = 0; k < creases.size(); ++k)
+      creases[k] = {crease_edges_[2 * k], crease_edges_[2 * k + 1], crease_sharpness_[k]};
+    if (std::string e = apply_creases(creases.data(), int(creases.size()), cage); !e.empty()) return fail(e);
+    Subdivision s;
+    s.build(cage, levels, true);
+    const PolyMesh& fine = s.refined_mesh();
+    out_positions_.assign(3 * size_t(fine.vertex_count), 0.0);
+    s.apply(positions_.data(), 3, out_positions_.data());
+    out_faces_ = fine.face_vertices;
+    out_crease_edges_.clear();
+    out_crease_sharpness_.clear();
+    for (int e = 0; e < fine.edge_count(); ++e)
+      if (!fine.boundary_edge(e) && fine.edge_sharpness[e] > 0) {
+        out_crease_edges_.insert(out_crease_edges_.end(), {fine.edge_vertices[2 * e], fine.edge_vertices[2 * e + 1]});
+        out_crease_sharpness_.push_back(fine.edge_sharpness[e]);
+      }
+    return kOk;
+  }
+  val refinedCagePositions() { return view_of(out_positions_); }
+  val refinedCageQuads() { return view_of(out_faces_); }
+  val refinedCageCreaseEdges() { return view_of(out_crease_edges_); }
+  val refinedCageCreaseSharpness() { return view_of(out_crease_sharpness_); }
+
   val handles() { return view_of(handles_); }
   void useShepard(double power) { rig_.use_shepard(handles_.data(), power); }
   int bbw(int level, int max_iterations, double multiplier_tolerance) {
@@ -114,6 +147,8 @@ class Skin3dRigHandle {
   SubdivisionRig rig_;
   std::vector<double> positions_, crease_sharpness_, handles_, transforms_, cage_in_, per_vertex_;
   std::vector<int> face_sizes_, face_indices_, crease_edges_;
+  std::vector<double> out_positions_, out_crease_sharpness_;
+  std::vector<int> out_faces_, out_crease_edges_;
   std::string error_;
 };
 
@@ -131,6 +166,11 @@ EMSCRIPTEN_BINDINGS(splinekit_skin3d) {
       .function("creaseEdgesIn", &Skin3dRigHandle::creaseEdgesIn)
       .function("creaseSharpnessIn", &Skin3dRigHandle::creaseSharpnessIn)
       .function("setup", &Skin3dRigHandle::setup)
+      .function("refineCage", &Skin3dRigHandle::refineCage)
+      .function("refinedCagePositions", &Skin3dRigHandle::refinedCagePositions)
+      .function("refinedCageQuads", &Skin3dRigHandle::refinedCageQuads)
+      .function("refinedCageCreaseEdges", &Skin3dRigHandle::refinedCageCreaseEdges)
+      .function("refinedCageCreaseSharpness", &Skin3dRigHandle::refinedCageCreaseSharpness)
       .function("handles", &Skin3dRigHandle::handles)
       .function("useShepard", &Skin3dRigHandle::useShepard)
       .function("bbw", &Skin3dRigHandle::bbw)

@@ -105,18 +105,16 @@ std::string SubdivisionRig::precompute() {
   const int R = refined_vertex_count(), H = handles_;
   const Eigen::Map<const Eigen::VectorXd> D(areas_.data(), R);
 
-  // Ŵ for every handle at once: G(r, 4i + c) = D_r w_ir [p_r; 1]_c, then Mᵀ G, level by level.
-  Eigen::MatrixXd G(R, 4 * H);
-  for (int r = 0; r < R; ++r) {
+  // Ŵ for every handle at once: G(r, 4i + c) = D_r w_ir [p_r; 1]_c, then Mᵀ G, level by level
+  // (G streamed row by row, never stored).
+  Eigen::MatrixXd B = subdivision_.apply_transpose(4 * H, [&](int r, double* g) {
     const double* w = &refined_weights_[size_t(r) * H];
     const double* p = &rest_refined_[3 * size_t(r)];
     for (int i = 0; i < H; ++i) {
       const double dw = D[r] * w[i];
-      G(r, 4 * i) = dw * p[0], G(r, 4 * i + 1) = dw * p[1], G(r, 4 * i + 2) = dw * p[2], G(r, 4 * i + 3) = dw;
+      g[4 * i] = dw * p[0], g[4 * i + 1] = dw * p[1], g[4 * i + 2] = dw * p[2], g[4 * i + 3] = dw;
     }
-  }
-  Eigen::MatrixXd B = subdivision_.apply_transpose(G);
-  G.resize(0, 0);
+  });
   Eigen::SparseMatrix<double> A = subdivision_.gram(D);
 
   // M can be rank-deficient: on the cube (every vertex of valence 3) the checkerboard ±1 of the

@@ -13,16 +13,40 @@ using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::R
 // Sharpness of a child half-edge: one level less, never below 0; +∞ stays +∞.
 double decay(double s) { return std::isinf(s) ? s : std::max(0.0, s - 1.0); }
 
-// Row builder: accumulates weight·(parent vertex) terms of one child vertex.
+// Builds a row-major sparse matrix row by row (rows in order): each row's terms are summed per
+// column when the row ends. Cheaper than triplets on the finest level's millions of entries.
 struct Rows {
-  std::vector<Eigen::Triplet<double>> t;
-  void add(int row, int col, double w) {
-    if (w != 0.0) t.emplace_back(row, col, w);
+  std::vector<int> outer{0}, inner;
+  std::vector<double> values;
+  void add(int col, double w) {
+    if (w != 0.0) inner.push_back(col), values.push_back(w);
   }
   // w · (face point of f) = w/n · Σ face vertices.
-  void add_face(const PolyMesh& m, int row, int f, double w) {
+  void add_face(const PolyMesh& m, int f, double w) {
     const int n = m.face_size(f);
-    for (int c = m.face_start[f]; c < m.face_start[f + 1]; ++c) add(row, m.face_vertices[c], w / n);
+    for (int c = m.face_start[f]; c < m.face_start[f + 1]; ++c) add(m.face_vertices[c], w / n);
+  }
+  void end_row() {
+    // Insertion sort by column (rows hold a few dozen terms), then merge equal columns.
+    const int begin = outer.back(), end = int(inner.size());
+    for (int i = begin + 1; i < end; ++i)
+      for (int j = i; j > begin && inner[j - 1] > inner[j]; --j)
+        std::swap(inner[j - 1], inner[j]), std::swap(values[j - 1], values[j]);
+    int out = begin;
+    for (int i = begin; i < end; ++i) {
+      if (out > begin && inner[out - 1] == inner[i]) {
+        values[out - 1] += values[i];
+      } else {
+        inner[out] = inner[i], values[out] = values[i];
+        ++out;
+      }
+    }
+    inner.resize(size_t(out)), values.resize(size_t(out));
+    outer.push_back(out);
+  }
+  void to_matrix(int cols, RowSparse& S) const {
+    S = Eigen::Map<const RowSparse>(int(outer.size()) - 1, cols, int(inner.size()), outer.data(), inner.data(),
+                                    values.data());
   }
 };
 
@@ -35,23 +59,11 @@ struct Rows {
 void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_topology) {
   const int nv = p.vertex_count, ne = p.edge_count(), nf = p.face_count();
   const int edge0 = nv, face0 = nv + ne;
+  // Rows in child order: vertex points, edge points, face points.
   Rows rows;
-  rows.t.reserve(size_t(nv) * 16 + size_t(ne) * 8 + p.face_vertices.size());
-
-  // Face points.
-  for (int f = 0; f < nf; ++f) rows.add_face(p, face0 + f, f, 1.0);
-
-  // Edge points.
-  for (int e = 0; e < ne; ++e) {
-    const int row = edge0 + e, a = p.edge_vertices[2 * e], b = p.edge_vertices[2 * e + 1];
-    const double s = p.boundary_edge(e) ? 1.0 : std::min(p.edge_sharpness[e], 1.0);  // weight of the sharp rule
-    rows.add(row, a, s * 0.5 + (1 - s) * 0.25);
-    rows.add(row, b, s * 0.5 + (1 - s) * 0.25);
-    if (s < 1) {
-      rows.add_face(p, row, p.edge_faces[2 * e], 0.25 * (1 - s));
-      rows.add_face(p, row, p.edge_faces[2 * e + 1], 0.25 * (1 - s));
-    }
-  }
+  rows.outer.reserve(size_t(nv + ne + nf) + 1);
+  rows.inner.reserve(size_t(nv) * 16 + size_t(ne) * 8 + p.face_vertices.size());
+  rows.values.reserve(rows.inner.capacity());
 
   // Vertex points.
   for (int v = 0; v < nv; ++v) {
@@ -59,7 +71,8 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
     const int f_begin = p.vertex_face_start[v], f_end = p.vertex_face_start[v + 1];
     const int valence = e_end - e_begin, faces = f_end - f_begin;
     if (valence == 0) {  // a vertex no face uses: carried along unchanged
-      rows.add(v, v, 1.0);
+      rows.add(v, 1.0);
+      rows.end_row();
       continue;
     }
     int sharp = 0, boundary = 0, ends[2] = {-1, -1};
@@ -77,21 +90,37 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
     // Weight of the crease/corner rule against the smooth rule (1 on boundaries: s̄ = +∞).
     const double alpha = corner && boundary > 0 ? 1.0 : sharp >= 2 ? std::min(1.0, sharpness / sharp) : 0.0;
     if (corner) {
-      rows.add(v, v, alpha);
+      rows.add(v, alpha);
     } else if (sharp == 2) {
-      rows.add(v, v, alpha * 0.75);
-      rows.add(v, ends[0], alpha * 0.125);
-      rows.add(v, ends[1], alpha * 0.125);
+      rows.add(v, alpha * 0.75);
+      rows.add(ends[0], alpha * 0.125);
+      rows.add(ends[1], alpha * 0.125);
     }
     if (alpha < 1) {
       const double n = valence, w = 1 - alpha;
-      rows.add(v, v, w * (n - 2) / n);
-      for (int q = e_begin; q < e_end; ++q) rows.add(v, p.other_end(p.vertex_edges[q], v), w / (n * n));
-      for (int q = f_begin; q < f_end; ++q) rows.add_face(p, v, p.vertex_faces[q], w / (n * n));
+      rows.add(v, w * (n - 2) / n);
+      for (int q = e_begin; q < e_end; ++q) rows.add(p.other_end(p.vertex_edges[q], v), w / (n * n));
+      for (int q = f_begin; q < f_end; ++q) rows.add_face(p, p.vertex_faces[q], w / (n * n));
     }
+    rows.end_row();
   }
-  S.resize(nv + ne + nf, nv);
-  S.setFromTriplets(rows.t.begin(), rows.t.end());
+  // Edge points.
+  for (int e = 0; e < ne; ++e) {
+    const int a = p.edge_vertices[2 * e], b = p.edge_vertices[2 * e + 1];
+    const double s = p.boundary_edge(e) ? 1.0 : std::min(p.edge_sharpness[e], 1.0);  // weight of the sharp rule
+    rows.add(a, s * 0.5 + (1 - s) * 0.25);
+    rows.add(b, s * 0.5 + (1 - s) * 0.25);
+    if (s < 1) {
+      rows.add_face(p, p.edge_faces[2 * e], 0.25 * (1 - s));
+      rows.add_face(p, p.edge_faces[2 * e + 1], 0.25 * (1 - s));
+    }
+    rows.end_row();
+  }
+
+  // Face points.
+  for (int f = 0; f < nf; ++f) rows.add_face(p, f, 1.0), rows.end_row();
+
+  rows.to_matrix(nv, S);
 
   // Child faces: corner j of face f → (vertex j, edge point j→j+1, face point, edge point j−1→j).
   child = PolyMesh{};
@@ -124,13 +153,13 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
 // The chain
 // ---------------------------------------------------------------------------------------------
 
-void Subdivision::build(const PolyMesh& cage, int levels) {
+void Subdivision::build(const PolyMesh& cage, int levels, bool final_topology) {
   cage_vertices_ = cage.vertex_count;
   steps_.assign(size_t(levels), RowSparse());
   scratch_.clear();
   PolyMesh current = cage, next;
   for (int j = 0; j < levels; ++j) {
-    refine_once(current, steps_[j], next, j + 1 < levels);
+    refine_once(current, steps_[j], next, j + 1 < levels || final_topology);
     current = std::move(next);
     next = PolyMesh{};
   }
@@ -153,22 +182,37 @@ void Subdivision::apply(const double* cage, int cols, double* refined) {
   }
 }
 
-Eigen::MatrixXd Subdivision::apply_transpose(const Eigen::MatrixXd& in) const {
-  Eigen::MatrixXd x = in;
-  for (size_t j = steps_.size(); j-- > 0;) x = steps_[j].transpose() * x;
+Eigen::MatrixXd Subdivision::apply_transpose(int cols, const std::function<void(int, double*)>& row) const {
+  const RowSparse& last = steps_.back();
+  RowMatrix x = RowMatrix::Zero(last.cols(), cols);
+  std::vector<double> g(size_t(cols), 0.0);
+  for (int r = 0; r < last.rows(); ++r) {
+    row(r, g.data());
+    for (RowSparse::InnerIterator it(last, r); it; ++it)
+      x.row(it.col()) += it.value() * Eigen::Map<const Eigen::RowVectorXd>(g.data(), cols);
+  }
+  // Row-major in between: each stored entry of S_j then adds one contiguous row.
+  for (size_t j = steps_.size() - 1; j-- > 0;) x = steps_[j].transpose() * x;
   return x;
 }
 
+namespace {
+
+// Sᵀ A S for a symmetric sparse A: (A S) first, then Sᵀ (A S) — fewer products than one triple
+// loop, since S has only a few entries per row.
+RowSparse congruence(const RowSparse& S, const RowSparse& A) {
+  const RowSparse AS = A * S, St = S.transpose();
+  return St * AS;
+}
+
+}  // namespace
+
 Eigen::SparseMatrix<double> Subdivision::gram(const Eigen::VectorXd& D) const {
-  Eigen::SparseMatrix<double> A(D.size(), D.size());
+  RowSparse A(D.size(), D.size());
   A.reserve(Eigen::VectorXi::Ones(D.size()));
   for (Eigen::Index r = 0; r < D.size(); ++r) A.insert(r, r) = D[r];
-  for (size_t j = steps_.size(); j-- > 0;) {
-    const Eigen::SparseMatrix<double> S = steps_[j];  // column-major copy for the products
-    const Eigen::SparseMatrix<double> AS = A * S;
-    A = Eigen::SparseMatrix<double>(S.transpose()) * AS;
-  }
-  return A;
+  for (size_t j = steps_.size(); j-- > 0;) A = congruence(steps_[j], A);
+  return A;  // symmetric: the column-major copy holds the same matrix
 }
 
 RowSparse Subdivision::compose() const {

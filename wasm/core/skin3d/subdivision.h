@@ -26,6 +26,7 @@
 
 #include <Eigen/SparseCore>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,8 +46,9 @@ class Subdivision {
  public:
   // ---- Constructors ---------------------------------------------------------------------------
   // cage: a PolyMesh with topology and crease sharpness (make_poly_mesh + apply_creases);
-  // levels ≥ 1. Builds every S_j.
-  void build(const PolyMesh& cage, int levels);
+  // levels ≥ 1. Builds every S_j; with final_topology the level-k mesh also gets its edges and
+  // their (decayed) crease sharpness, to be used as a cage of its own.
+  void build(const PolyMesh& cage, int levels, bool final_topology = false);
 
   // ---- Queries --------------------------------------------------------------------------------
   int levels() const { return int(steps_.size()); }
@@ -58,8 +60,9 @@ class Subdivision {
   // refined (#refined by cols, row-major) = M · cage (#cage by cols, row-major). Uses internal
   // scratch sized on first use for cols (allocation-free afterwards for the same cols).
   void apply(const double* cage, int cols, double* refined);
-  // out (#cage by cols, column-major) = Mᵀ · in (#refined by cols, column-major).
-  Eigen::MatrixXd apply_transpose(const Eigen::MatrixXd& in) const;
+  // Mᵀ · G (#cage by cols) for the #refined by cols matrix G given row by row: row(r, g) writes
+  // row r of G into g (cols values). G is never stored: each row goes straight through S_kᵀ.
+  Eigen::MatrixXd apply_transpose(int cols, const std::function<void(int, double*)>& row) const;
   // Mᵀ D M for the diagonal D (#refined), as a #cage by #cage sparse matrix, level by level.
   Eigen::SparseMatrix<double> gram(const Eigen::VectorXd& D) const;
   // The product M, explicitly (for tests and small cages).
