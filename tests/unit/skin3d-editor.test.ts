@@ -5,8 +5,10 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { Matrix4, Quaternion, Vector3 } from 'three';
-import { describe, expect, test } from 'vitest';
+import { beforeAll, describe, expect, test } from 'vitest';
+import { SubdivisionRig, cageToOBJ, init, parseCage } from '../../src/index.js';
 import { deleteKeyframe, keyframeAt, retimeKeyframe, setKeyframe } from '../../web/app/keyframes.js';
+import { KeyframeControl, type KeyedSession } from '../../web/modes/skin/keyframe-control.js';
 import { niceCeil, rampColor, rampColors } from '../../web/modes/skin3d/colormap.js';
 import {
   EMPTY_SPEC3D,
@@ -23,7 +25,12 @@ import {
   setHandlePose,
   type HandlePose,
   type Handle3D,
+  type Skin3DSpec,
 } from '../../web/modes/skin3d/spec.js';
+
+beforeAll(async () => {
+  await init();
+});
 
 const root = join(import.meta.dirname, '..', '..');
 
@@ -171,6 +178,63 @@ describe('handles and keyframes on a spec', () => {
   });
 });
 
+describe('KeyframeControl (the timeline edits both skin modes share)', () => {
+  /** A session whose pose follows its keyframes when the playhead moves, and a host recording edits. */
+  function setup() {
+    let spec: Skin3DSpec = addHandle3D(EMPTY_SPEC3D, 0, [0, 0, 0]);
+    const session: KeyedSession<Skin3DSpec> & { spec: Skin3DSpec; time: number } = {
+      spec,
+      time: 0,
+      setTime(t) {
+        this.time = Math.min(this.spec.duration, Math.max(0, t));
+        if (this.spec.keyframes.length > 0) this.spec = { ...this.spec, pose: poseAt3D(this.spec.keyframes, this.time) };
+      },
+    };
+    const labels: string[] = [];
+    const control = new KeyframeControl<Skin3DSpec>({
+      session: () => session,
+      canKey: () => session.spec.handles.length > 0,
+      busy: () => false,
+      execute: (label, after) => {
+        labels.push(label);
+        session.spec = spec = after;
+      },
+      refresh: () => undefined,
+      stopped: () => undefined,
+    });
+    return { session, control, labels };
+  }
+
+  test('keys the pose at the playhead, replaces it, jumps between keys, deletes, moves and lengthens', () => {
+    const { session, control, labels } = setup();
+    const up = pose([0, 0, 1], 0, [0, 1, 0], [1, 1, 1]);
+    control.addKeyframe();
+    control.seek(1.5, false);
+    session.spec = setHandlePose(session.spec, 0, up);
+    control.addKeyframe();
+    control.addKeyframe();
+    expect(labels).toEqual(['Add keyframe', 'Add keyframe', 'Replace keyframe']);
+    expect(session.spec.keyframes.map((k) => k.time)).toEqual([0, 1.5]);
+    control.runKey('previous-key');
+    expect(session.time).toBe(0);
+    expect(session.spec.pose[0].t).toEqual([0, 0, 0]);
+    control.runKey('next-key');
+    expect(session.time).toBe(1.5);
+    expect(session.spec.pose[0].t).toEqual([0, 1, 0]);
+    control.runKey('end');
+    expect(session.time).toBe(2);
+    control.moveKeyframe(1, 3); // past the end: the animation gets longer
+    expect(session.spec.keyframes[1].time).toBe(3);
+    expect(session.spec.duration).toBe(3);
+    control.setDuration(1); // never shorter than the last keyframe
+    expect(session.spec.duration).toBe(3);
+    control.seek(3, false);
+    control.deleteKeyframe();
+    expect(session.spec.keyframes.map((k) => k.time)).toEqual([0]);
+    expect(labels.at(-1)).toBe('Delete keyframe');
+  });
+});
+
 describe('error colour ramp', () => {
   test('ends, clamping, and a readable scale top', () => {
     const out = new Float32Array(3);
@@ -196,6 +260,26 @@ describe('error colour ramp', () => {
 });
 
 describe('sample cages (public/samples/cages)', () => {
+  test.each(['gingerbread.obj', 'bar.obj'])('%s: parseCage reads it, a rig subdivides and poses it, cageToOBJ writes it back', (file) => {
+    const text = readFileSync(join(root, 'public/samples/cages', file), 'utf8');
+    const cage = parseCage(text, file);
+    const vertices = text.split('\n').filter((l) => l.startsWith('v ')).length;
+    expect(cage.positions.length).toBe(3 * vertices);
+    expect(cage.creases.length).toBe(text.split('\n').filter((l) => l.startsWith('t crease')).length);
+    const rig = SubdivisionRig.create(cage, { handles: [0, 0, 0], levels: 2 });
+    try {
+      // One handle moved by t: every cage vertex (and the surface) moves by t.
+      const posed = rig.pose([1, 0, 0, 0.5, 0, 1, 0, -1, 0, 0, 1, 2], 'fit').slice();
+      for (let i = 0; i < posed.length; i++) expect(posed[i] - cage.positions[i]).toBeCloseTo([0.5, -1, 2][i % 3], 9);
+      expect(rig.refinedTriangles.length % 3).toBe(0);
+    } finally {
+      rig.dispose();
+    }
+    const again = parseCage(cageToOBJ(cage), file);
+    expect([...again.faceSizes]).toEqual([...cage.faceSizes]);
+    expect(again.creases).toEqual(cage.creases);
+  });
+
   const index = JSON.parse(readFileSync(join(root, 'public/samples/cages/index.json'), 'utf8')) as { cages: { file: string }[] };
 
   test.each(index.cages.map((c) => c.file))('%s is closed, manifold, outward-facing, with crease tags on its own edges', (file) => {
