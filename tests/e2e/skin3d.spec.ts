@@ -219,7 +219,7 @@ test('3D Skin: handles on the surface, a gizmo drag poses it, undo restores the 
   expect([...tracks[0].values]).toEqual([1, 0, 0, 1]);
 });
 
-test('3D Skin: a bad cage keeps the cage shown; BBW weights come from the worker with progress; another sample and undo', async ({ page }) => {
+test('3D Skin: a bad cage keeps the cage shown; BBW weights come from the worker with progress; another sample and undo; the autosave after a reload', async ({ page }) => {
   await openEditor(page);
   await page.getByRole('button', { name: '3D Skin', exact: true }).click();
   await expect.poll(async () => (await skin3d(page)).file).toBe('gingerbread.obj');
@@ -259,5 +259,18 @@ test('3D Skin: a bad cage keeps the cage shown; BBW weights come from the worker
   await expect.poll(async () => (await skin3d(page)).file).toBe('gingerbread.obj');
   s = await settled(page);
   expect(s.handles).toHaveLength(2);
+  expect(s.rig.ready).toBe(true);
+
+  // Reload: 3D Skin mode, the gingerbread, its handles and BBW weights come back from the autosave.
+  await expect.poll(async () => (await skin3d(page)).saved).toBe(true);
+  const handles = s.handles;
+  await page.reload();
+  await page.waitForFunction(() => window.splinekitEditor !== undefined);
+  await page.evaluate(() => window.splinekitEditor!.ready);
+  await expect.poll(async () => (await skin3d(page)).file).toBe('gingerbread.obj');
+  s = await settled(page);
+  expect(s.active).toBe(true);
+  expect(s.handles).toEqual(handles);
+  await expect(page.getByRole('button', { name: 'BBW', exact: true })).toHaveAttribute('aria-pressed', 'true');
   expect(s.rig.ready).toBe(true);
 });

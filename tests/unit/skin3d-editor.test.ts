@@ -10,6 +10,7 @@ import { SubdivisionRig, cageToOBJ, init, parseCage } from '../../src/index.js';
 import { deleteKeyframe, keyframeAt, retimeKeyframe, setKeyframe } from '../../web/app/keyframes.js';
 import { KeyframeControl, type KeyedSession } from '../../web/modes/skin/keyframe-control.js';
 import { niceCeil, rampColor, rampColors } from '../../web/modes/skin3d/colormap.js';
+import { spec3DFromJSON, spec3DToJSON } from '../../web/modes/skin3d/storage.js';
 import {
   EMPTY_SPEC3D,
   REST_POSE,
@@ -232,6 +233,26 @@ describe('KeyframeControl (the timeline edits both skin modes share)', () => {
     control.deleteKeyframe();
     expect(session.spec.keyframes.map((k) => k.time)).toEqual([0]);
     expect(labels.at(-1)).toBe('Delete keyframe');
+  });
+});
+
+describe('the autosaved spec (JSON)', () => {
+  test('round-trips a posed, keyframed spec exactly, through JSON text', () => {
+    let spec = addHandle3D(addHandle3D({ ...EMPTY_SPEC3D, weights: 'bbw', levels: 3 }, 4, [1, 2, 3]), 9, [-1, 0, 0.5]);
+    spec = setHandlePose(spec, 1, pose([1, 1, 0], 0.4, [0.1, 0.2, 0.3], [1, 2, 1]));
+    spec = setKeyframe(spec, 0.5);
+    const back = spec3DFromJSON(JSON.parse(JSON.stringify(spec3DToJSON(spec))));
+    expect(back).toEqual(spec);
+  });
+
+  test('names what is wrong in a bad one', () => {
+    const good = spec3DToJSON(addHandle3D(EMPTY_SPEC3D, 0, [0, 0, 0]));
+    expect(() => spec3DFromJSON({ ...good, version: 2 })).toThrow(/version 1/);
+    expect(() => spec3DFromJSON({ ...good, handles: [{ id: 0, x: 0, y: Number.NaN, z: 0 }] })).toThrow(/finite/);
+    expect(() => spec3DFromJSON({ ...good, handles: [good.handles[0], good.handles[0]], pose: [good.pose[0], good.pose[0]] })).toThrow(/unique/);
+    expect(() => spec3DFromJSON({ ...good, pose: [] })).toThrow(/the pose needs 1 poses/);
+    expect(() => spec3DFromJSON({ ...good, levels: 7 })).toThrow(/levels/);
+    expect(() => spec3DFromJSON({ ...good, keyframes: [{ time: 1, transforms: good.pose }, { time: 0.5, transforms: good.pose }] })).toThrow(/increase/);
   });
 });
 

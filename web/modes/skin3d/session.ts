@@ -77,6 +77,8 @@ export class Skin3DSession {
   constructor(
     readonly cage: Cage,
     readonly file: string,
+    /** The OBJ text the cage was read from (autosaved with the spec). */
+    readonly source: string,
     private readonly client: Weights3DClient,
     /** Where rig builds under way are counted (the mode's in-flight tracker). */
     private readonly work: InFlight,
@@ -142,6 +144,13 @@ export class Skin3DSession {
     this.ensureRig();
     this.repose(live);
     this.events.emit('spec', { spec, live });
+  }
+
+  /** Starts from a saved spec with the playhead at `time` (the saved pose wins over the animation). */
+  restore(spec: Skin3DSpec, time: number): void {
+    this._time = Math.min(spec.duration, Math.max(0, time));
+    this.apply(spec);
+    this.events.emit('time', this._time);
   }
 
   select(id: number | null): void {

@@ -1,5 +1,6 @@
 import { Vector3 } from 'three';
 import { cageToOBJ, parseCage, type SubdivisionRig } from '../../../src/index.js';
+import { DebouncedSave } from '../../app/autosave.js';
 import { download } from '../../app/download.js';
 import { messageOf } from '../../app/errors.js';
 import { InFlight } from '../../app/in-flight.js';
@@ -19,7 +20,17 @@ import { SKIN3D_COLORS, Skin3DLayers } from './layers.js';
 import { Skin3DSession, boundingBox, type PoseOverlays } from './session.js';
 import { Skin3DPanel, type CageSample, type GizmoMode, type Overlay3D, type Overlay3DFlags } from './skin3d-panel.js';
 import { EMPTY_SPEC3D, REST_POSE, addHandle3D, isRest, poseAt3D, posedCenter, samePoses, removeHandle3D, setHandlePose, setPose3D, type HandlePose, type Skin3DSpec, type Skin3DWeights } from './spec.js';
+import { loadSkin3D, saveSkin3D } from './storage.js';
 import { Weights3DClient } from './weights-client.js';
+
+const AUTOSAVE_MS = 300;
+
+/** How a cage is opened: undoable (a user's open) or not (the starting cage), with a saved spec. */
+interface OpenOptions {
+  undoable: boolean;
+  spec?: Skin3DSpec;
+  time?: number;
+}
 
 /** Pixels around a handle's marker that pick it. */
 const HANDLE_PICK_PX = 12;
@@ -49,6 +60,8 @@ export interface Skin3DTestState {
   overlays: Overlay3DFlags;
   errors: { fitRms: number; naiveRms: number } | null;
   canUndo: boolean;
+  /** Nothing waits to be autosaved. */
+  saved: boolean;
 }
 
 /**
@@ -90,6 +103,7 @@ export class Skin3DMode implements Mode {
   private diagonalOf: { rig: SubdivisionRig; value: number } | null = null;
   private off: (() => void)[] = [];
   private sessionOff: (() => void)[] = [];
+  private readonly autosave = new DebouncedSave(AUTOSAVE_MS, () => this.saveNow());
   private readonly keyframes = new KeyframeControl<Skin3DSpec>({
     session: () => this._session,
     canKey: () => (this._session?.spec.handles.length ?? 0) > 0,
@@ -101,6 +115,10 @@ export class Skin3DMode implements Mode {
       this.requestDraw();
     },
   });
+
+  constructor() {
+    window.addEventListener('pagehide', () => this.autosave.flush());
+  }
 
   // ---- Mode ------------------------------------------------------------------------------------
 
@@ -144,6 +162,7 @@ export class Skin3DMode implements Mode {
 
   deactivate(): void {
     const ctx = this.ctx;
+    this.autosave.flush();
     this.keyframes.stop();
     this.endDrag();
     for (const off of this.off) off();
@@ -209,7 +228,7 @@ export class Skin3DMode implements Mode {
   }
 
   /** Opens a sample cage (public/samples/cages). */
-  async openSample(file: string, options = { undoable: true }): Promise<boolean> {
+  async openSample(file: string, options: OpenOptions = { undoable: true }): Promise<boolean> {
     try {
       const bytes = await this.work.track(fetchBytes(`samples/cages/${file}`, file));
       return this.openText(new TextDecoder().decode(bytes), file, options);
@@ -224,13 +243,15 @@ export class Skin3DMode implements Mode {
    * Opens a cage from OBJ text (undoable, unless it is the starting cage). A cage the parser or
    * the rig rejects is reported in the editor's error line and the cage shown stays.
    */
-  openText(text: string, name: string, options = { undoable: true }): boolean {
+  openText(text: string, name: string, options: OpenOptions = { undoable: true }): boolean {
     const ctx = this.ctx;
     if (!ctx) return false;
     let next: Skin3DSession;
     try {
       const cage = parseCage(text, name);
-      next = new Skin3DSession(cage, name, this.client, this.work, { ...EMPTY_SPEC3D, levels: cage.positions.length / 3 > 2000 ? 1 : EMPTY_SPEC3D.levels });
+      // No handles yet: the surface is built at once (a saved spec's handles and weights follow).
+      const levels = options.spec?.levels ?? (cage.positions.length / 3 > 2000 ? 1 : EMPTY_SPEC3D.levels);
+      next = new Skin3DSession(cage, name, text, this.client, this.work, { ...EMPTY_SPEC3D, levels });
       if (!next.rig) {
         const message = next.status.message ?? 'the surface could not be built';
         next.dispose();
@@ -244,6 +265,8 @@ export class Skin3DMode implements Mode {
     ctx.state.setError(null);
     if (options.undoable) ctx.history.execute(new OpenCageCommand((s) => this.show(s), this._session, next));
     else this.show(next);
+    // A restored session: its pose, keyframes and playhead (after the rig is there).
+    if (options.spec) next.restore(options.spec, options.time ?? 0);
     return true;
   }
 
@@ -265,7 +288,11 @@ export class Skin3DMode implements Mode {
       }
       this.panel?.setSamples(this.samples, this._session?.file ?? null);
     }
-    if (!this._session && this.samples[0]) await this.openSample(this.samples[0].file, { undoable: false });
+    if (this._session) return;
+    const saved = loadSkin3D();
+    if (saved && 'problem' in saved) this.ctx?.state.setMessage(saved.problem);
+    else if (saved && this.openText(saved.obj, saved.file, { undoable: false, spec: saved.spec, time: saved.time })) return;
+    if (this.samples[0]) await this.openSample(this.samples[0].file, { undoable: false });
   }
 
   /** Shows a session (open, undo and redo of an open). */
@@ -281,9 +308,10 @@ export class Skin3DMode implements Mode {
     if (next) {
       next.resume();
       this.sessionOff.push(
-        next.events.on('spec', () => {
+        next.events.on('spec', ({ live }) => {
           this.refreshPanel();
           this.refreshTimeline();
+          if (!live) this.autosave.schedule();
         }),
         next.events.on('posed', ({ live }) => {
           this.livePose = live;
@@ -293,7 +321,10 @@ export class Skin3DMode implements Mode {
           this.refreshPanel();
           this.requestDraw();
         }),
-        next.events.on('time', () => this.refreshTimeline()),
+        next.events.on('time', () => {
+          this.refreshTimeline();
+          this.autosave.schedule();
+        }),
         next.events.on('rig', (status) => {
           if (status.phase === 'error' && status.message) this.ctx?.state.setError(`3D Skin: ${status.message}`);
           this.refreshPanel();
@@ -302,7 +333,21 @@ export class Skin3DMode implements Mode {
       );
     }
     this.panel?.setSamples(this.samples, next?.file ?? null);
+    if (next) this.autosave.schedule();
     this.refreshAll();
+  }
+
+  /** Autosaves the cage shown with its spec and playhead. */
+  private saveNow(): void {
+    const s = this._session;
+    if (!s) return;
+    const problem = saveSkin3D(s.file, s.source, s.spec, s.time);
+    if (problem) this.ctx?.state.setMessage(`Not autosaved: ${problem}`);
+  }
+
+  /** Whether everything is autosaved (for tests). */
+  get saved(): boolean {
+    return !this.autosave.pending;
   }
 
   // ---- edits -----------------------------------------------------------------------------------
@@ -671,6 +716,7 @@ export class Skin3DMode implements Mode {
       overlays: { ...this.overlays },
       errors: this.lastErrors,
       canUndo: this.ctx?.history.canUndo ?? false,
+      saved: this.saved,
     };
   }
 
