@@ -25,8 +25,8 @@ function normalsOf(positions: Float32Array, index: BufferAttribute): Float32Arra
  * The refined surface as a binary glTF (GLB) that plays in any viewer: the rest surface as the
  * mesh, one morph target per frame (absolute positions, with their normals), and one animation
  * whose weights track switches on frame k's target at frame k's time (linear in between, so an
- * in-between is the blend of its two keyframes' surfaces). With a single frame the mesh shows it
- * (its target's weight is 1).
+ * in-between is the blend of its two frames' surfaces: the caller samples frames densely enough).
+ * With a single frame the mesh shows it (its target's weight is 1).
  */
 export async function animatedGLTF(rest: Float64Array, triangles: Uint32Array, frames: readonly SurfaceFrame[]): Promise<ArrayBuffer> {
   if (frames.length === 0) throw new Error('glTF export: no frames');

@@ -24,6 +24,8 @@ import { loadSkin3D, saveSkin3D } from './storage.js';
 import { Weights3DClient } from './weights-client.js';
 
 const AUTOSAVE_MS = 300;
+/** Frames per second of the exported glTF between keyframes. */
+export const GLTF_FPS = 10;
 
 /** How a cage is opened: undoable (a user's open) or not (the starting cage), with a saved spec. */
 interface OpenOptions {
@@ -558,18 +560,29 @@ export class Skin3DMode implements Mode {
     }
   }
 
-  /** The surface per keyframe (or the current pose when there are none), for the glTF. */
+  /**
+   * The surface at every keyframe and at GLTF_FPS in between (so that a viewer, which blends
+   * neighbouring frames linearly, plays what the timeline plays: turns stay turns), or the current
+   * pose when there are no keyframes, for the glTF.
+   */
   surfaceFrames(): SurfaceFrame[] {
     const s = this._session;
     if (!s) return [];
-    if (s.spec.keyframes.length === 0) return [{ time: 0, positions: s.surface.slice() }];
-    const frames: SurfaceFrame[] = [];
-    for (const k of s.spec.keyframes) {
-      const positions = s.surfaceFor(k.transforms);
+    const keys = s.spec.keyframes;
+    if (keys.length === 0) return [{ time: 0, positions: s.surface.slice() }];
+    const times: number[] = [];
+    keys.forEach((k, i) => {
+      times.push(k.time);
+      const next = keys[i + 1];
+      if (!next) return;
+      const steps = Math.ceil((next.time - k.time) * GLTF_FPS - 1e-9);
+      for (let j = 1; j < steps; j++) times.push(k.time + ((next.time - k.time) * j) / steps);
+    });
+    return times.map((time) => {
+      const positions = s.surfaceFor(poseAt3D(keys, time));
       if (!positions) throw new Error('the rig is not ready for these handles yet');
-      frames.push({ time: k.time, positions });
-    }
-    return frames;
+      return { time, positions };
+    });
   }
 
   /** Builds the animated glTF (binary) of the surface; rejects with a message. */

@@ -116,7 +116,7 @@ export class Skin3DPanel {
     );
 
     this.objButton = button('Posed cage (OBJ)', 'Download the posed cage as OBJ (crease tags kept)', () => actions.exportOBJ(), 'small', 'skin3d-export-obj');
-    this.gltfButton = button('Animation (glTF)', 'Download the refined surface as binary glTF: one morph target per keyframe, played by a weights animation at the keyframes’ times', () => actions.exportGLTF(), 'small', 'skin3d-export-gltf');
+    this.gltfButton = button('Animation (glTF)', 'Download the refined surface as binary glTF (GLB): one morph target per keyframe and per tenth of a second between keyframes, played by a weights animation', () => actions.exportGLTF(), 'small', 'skin3d-export-gltf');
 
     this.sections = [
       section('Cage', h('div', { class: 'row' }, this.cageSelect, open), this.cageInput, this.cageFacts.el),
