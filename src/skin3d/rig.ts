@@ -21,7 +21,17 @@ import type { Cage } from './cage.js';
  * subdivided to the rig's level), or given per refined vertex or per cage vertex (subdivided like
  * positions). Arrays are row-major: vertex-major, handle-minor.
  */
-export type WeightSpec = 'shepard' | 'bbw' | { perRefinedVertex: Float64Array } | { perCageVertex: Float64Array };
+export type WeightSpec =
+  | 'shepard'
+  | 'bbw'
+  | {
+      /** #refined × #handles weights, row-major (vertex-major, handle-minor). */
+      perRefinedVertex: Float64Array;
+    }
+  | {
+      /** #cage × #handles weights, row-major; subdivided to the refined vertices like positions. */
+      perCageVertex: Float64Array;
+    };
 
 /** What SubdivisionRig.create needs. */
 export interface SubdivisionRigOptions {
@@ -148,7 +158,17 @@ export class SubdivisionRig {
   /** Vertices of the level-k surface. */
   readonly refinedVertexCount: number;
   /** Precompute time and the memory of M (the subdivision matrix, stored as its per-level factors) and O (#cage × 4·#handles doubles). */
-  readonly stats: { precomputeMs: number; memoryBytes: { M: number; O: number } };
+  readonly stats: {
+    /** Milliseconds spent in create() (subdivision, weights, factorization, O). */
+    precomputeMs: number;
+    /** Bytes held in wasm memory by the rig's two big matrices. */
+    memoryBytes: {
+      /** The subdivision matrix, stored as its per-level factors S_k ⋯ S_1. */
+      M: number;
+      /** O = [Ŵ_i Â⁻¹]_i, #cage × 4·#handles doubles. */
+      O: number;
+    };
+  };
   private lastMethod: Skin3dMethod = 'fit';
   private cached: { triangles?: Uint32Array; rest?: Float64Array; weights?: Float64Array } = {};
 
