@@ -17,7 +17,7 @@ import type { Cage } from './cage.js';
 
 /**
  * Skinning weights: 'shepard' (inverse squared distance, at the refined vertices), 'bbw' (bounded
- * biharmonic weights on the refined surface, solved at a level of at most ~20k vertices and
+ * biharmonic weights on the refined surface, solved at the finest level of at most 5,000 vertices and
  * subdivided to the rig's level), or given per refined vertex or per cage vertex (subdivided like
  * positions). Arrays are row-major: vertex-major, handle-minor.
  */
@@ -55,7 +55,7 @@ export interface Skin3dError {
 }
 
 /** BBW is solved at the finest level with at most this many vertices, then subdivided. */
-const BBW_MAX_VERTICES = 20000;
+const BBW_MAX_VERTICES = 5000;
 
 const links = new HandleLinks<Skin3dRigHandle>(() => new SplinekitError('invalid-input', 'SubdivisionRig used after dispose()'));
 
