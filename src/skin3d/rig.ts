@@ -263,6 +263,18 @@ export class SubdivisionRig {
     return h.refine(2);
   }
 
+  /**
+   * The limit positions of the level-k vertices (Catmull-Clark limit masks, creases and corners
+   * kept) for `cagePositions` or the last pose: the points of the smooth surface itself (a view, as
+   * pose()). The first call builds the masks.
+   */
+  limit(cagePositions?: Float64Array): Float64Array {
+    const h = links.get(this);
+    if (!cagePositions) return h.limit(this.lastMethod === 'fit' ? 0 : 1);
+    this.refined(cagePositions);
+    return h.limit(2);
+  }
+
   /** The target: linear blend skinning of the refined rest surface for the last transforms (a view). */
   target(): Float64Array {
     return links.get(this).target();
