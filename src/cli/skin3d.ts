@@ -3,7 +3,7 @@ import { basename } from 'node:path';
 import { SplinekitError } from '../core/errors.js';
 import { cageToOBJ, parseCage } from '../skin3d/cage.js';
 import { SubdivisionRig, type Skin3dMethod } from '../skin3d/rig.js';
-import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
+import { UsageError, medianMs, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
 const usage = `usage: splinekit skin3d <cage.obj> --handles <handles.json> --pose <pose.json>
        [--levels K] [--weights shepard|bbw] [--method fit|naive] [--json out.json] [-o out.obj]
@@ -48,11 +48,6 @@ function readTransforms(path: string, count: number): number[] {
   });
 }
 
-function median(xs: number[]): number {
-  const s = [...xs].sort((a, b) => a - b);
-  return s[Math.floor(s.length / 2)];
-}
-
 export const skin3d: Command = {
   summary: 'skin a Catmull-Clark cage with handles: the output stays a cage',
   usage,
@@ -86,13 +81,7 @@ export const skin3d: Command = {
     const rig = SubdivisionRig.create(cage, { handles, levels, weights: values.weights as 'shepard' | 'bbw' });
     const precomputeMs = performance.now() - t0;
     try {
-      rig.pose(transforms, method);
-      const times: number[] = [];
-      for (let i = 0; i < 110; i++) {
-        const a = performance.now();
-        rig.pose(transforms, method);
-        if (i >= 10) times.push(performance.now() - a);
-      }
+      const updateMs = medianMs(() => rig.pose(transforms, method));
       const posed = rig.pose(transforms, method).slice();
       const err = rig.error(method);
       if (values.o) writeFileSync(values.o, cageToOBJ(cage, posed));
@@ -106,7 +95,7 @@ export const skin3d: Command = {
           weights: values.weights,
           method,
           precompute_ms: precomputeMs,
-          update_ms: median(times),
+          update_ms: updateMs,
           error_rms: err.rms,
           memory_bytes: { M: rig.stats.memoryBytes.M, O: rig.stats.memoryBytes.O },
         },

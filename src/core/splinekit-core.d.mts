@@ -93,6 +93,8 @@ export interface Skin3dRigHandle extends EmbindObject {
   cageIn(): Float64Array;
   /** source: 0 the fit, 1 the naive cage, 2 cageIn(). */
   refine(source: number): Float64Array;
+  /** source as refine(). */
+  limit(source: number): Float64Array;
   target(): Float64Array;
   error(source: number): number;
   perVertexError(): Float64Array;

@@ -17,11 +17,21 @@ import type { Cage } from './cage.js';
 
 /**
  * Skinning weights: 'shepard' (inverse squared distance, at the refined vertices), 'bbw' (bounded
- * biharmonic weights on the refined surface, solved at a level of at most ~20k vertices and
+ * biharmonic weights on the refined surface, solved at the finest level of at most 5,000 vertices and
  * subdivided to the rig's level), or given per refined vertex or per cage vertex (subdivided like
  * positions). Arrays are row-major: vertex-major, handle-minor.
  */
-export type WeightSpec = 'shepard' | 'bbw' | { perRefinedVertex: Float64Array } | { perCageVertex: Float64Array };
+export type WeightSpec =
+  | 'shepard'
+  | 'bbw'
+  | {
+      /** #refined × #handles weights, row-major (vertex-major, handle-minor). */
+      perRefinedVertex: Float64Array;
+    }
+  | {
+      /** #cage × #handles weights, row-major; subdivided to the refined vertices like positions. */
+      perCageVertex: Float64Array;
+    };
 
 /** What SubdivisionRig.create needs. */
 export interface SubdivisionRigOptions {
@@ -45,7 +55,7 @@ export interface Skin3dError {
 }
 
 /** BBW is solved at the finest level with at most this many vertices, then subdivided. */
-const BBW_MAX_VERTICES = 20000;
+const BBW_MAX_VERTICES = 5000;
 
 const links = new HandleLinks<Skin3dRigHandle>(() => new SplinekitError('invalid-input', 'SubdivisionRig used after dispose()'));
 
@@ -148,7 +158,17 @@ export class SubdivisionRig {
   /** Vertices of the level-k surface. */
   readonly refinedVertexCount: number;
   /** Precompute time and the memory of M (the subdivision matrix, stored as its per-level factors) and O (#cage × 4·#handles doubles). */
-  readonly stats: { precomputeMs: number; memoryBytes: { M: number; O: number } };
+  readonly stats: {
+    /** Milliseconds spent in create() (subdivision, weights, factorization, O). */
+    precomputeMs: number;
+    /** Bytes held in wasm memory by the rig's two big matrices. */
+    memoryBytes: {
+      /** The subdivision matrix, stored as its per-level factors S_k ⋯ S_1. */
+      M: number;
+      /** O = [Ŵ_i Â⁻¹]_i, #cage × 4·#handles doubles. */
+      O: number;
+    };
+  };
   private lastMethod: Skin3dMethod = 'fit';
   private cached: { triangles?: Uint32Array; rest?: Float64Array; weights?: Float64Array } = {};
 
@@ -241,6 +261,18 @@ export class SubdivisionRig {
     }
     h.cageIn().set(cagePositions);
     return h.refine(2);
+  }
+
+  /**
+   * The limit positions of the level-k vertices (Catmull-Clark limit masks, creases and corners
+   * kept) for `cagePositions` or the last pose: the points of the smooth surface itself (a view, as
+   * pose()). The first call builds the masks.
+   */
+  limit(cagePositions?: Float64Array): Float64Array {
+    const h = links.get(this);
+    if (!cagePositions) return h.limit(this.lastMethod === 'fit' ? 0 : 1);
+    this.refined(cagePositions);
+    return h.limit(2);
   }
 
   /** The target: linear blend skinning of the refined rest surface for the last transforms (a view). */

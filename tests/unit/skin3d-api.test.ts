@@ -138,6 +138,30 @@ test('bbw weights: bounded, a partition of unity', () => {
   }
 });
 
+test('limit(): the regular torus lands on its bicubic B-spline surface; posed limits follow the pose', () => {
+  const c = parseCage(readShared('meshes/quad/torus_quad.obj'));
+  const rig = SubdivisionRig.create(c, { handles: [1.35, 0, 0], levels: 1 });
+  try {
+    // Vertex point of cage vertex 6i + j at level 1 has the limit (1,4,1)⊗(1,4,1)/36 of the cage.
+    const P = c.positions, lim = rig.limit(P).slice(); // a view: copied before the next call
+    for (const [i, j] of [[0, 0], [5, 3], [11, 5]]) {
+      const want = [0, 0, 0];
+      for (let di = -1; di <= 1; di++)
+        for (let dj = -1; dj <= 1; dj++) {
+          const w = ((di === 0 ? 4 : 1) * (dj === 0 ? 4 : 1)) / 36, v = 6 * ((i + di + 12) % 12) + ((j + dj + 6) % 6);
+          for (let a = 0; a < 3; a++) want[a] += w * P[3 * v + a];
+        }
+      expect(maxDiff(lim.subarray(3 * (6 * i + j), 3 * (6 * i + j) + 3), want)).toBeLessThan(1e-14);
+    }
+    const moved = rig.pose([1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3]).slice();
+    const posedLimit = rig.limit();
+    expect(posedLimit[0]).toBeCloseTo(lim[0] + 1, 9);
+    expect(moved[2]).toBeCloseTo(P[2] + 3, 9);
+  } finally {
+    rig.dispose();
+  }
+});
+
 test('refineCage: subdividing the refined cage once is subdividing the cage twice (creases decayed)', () => {
   const c = parseCage(readShared('meshes/quad/catmark_cube_creases1.obj'));
   const once = refineCage(c, 1);

@@ -121,6 +121,8 @@ class Skin3dRigHandle {
   val cageIn() { return view_of(cage_in_); }
   // M · (source: 0 the fit, 1 the naive cage, 2 cageIn()).
   val refine(int source) { return val(typed_memory_view(rig_.refined().size(), rig_.refine(source_cage(source)))); }
+  // Limit positions of the level-k vertices of M · (source).
+  val limit(int source) { return val(typed_memory_view(rig_.refined().size(), rig_.limit(source_cage(source)))); }
   val target() { return val(typed_memory_view(rig_.refined().size(), rig_.target(transforms_.data()))); }
   // Error of M · (source) against the target, per refined vertex into perVertexError().
   double error(int source) { return rig_.error(source_cage(source), transforms_.data(), per_vertex_.data()); }
@@ -186,6 +188,7 @@ EMSCRIPTEN_BINDINGS(splinekit_skin3d) {
       .function("naive", &Skin3dRigHandle::naive)
       .function("cageIn", &Skin3dRigHandle::cageIn)
       .function("refine", &Skin3dRigHandle::refine)
+      .function("limit", &Skin3dRigHandle::limit)
       .function("target", &Skin3dRigHandle::target)
       .function("error", &Skin3dRigHandle::error)
       .function("perVertexError", &Skin3dRigHandle::perVertexError)

@@ -133,6 +133,19 @@ TEST(Subdivision, RegularTorusIsItsBicubicBSplineSurface) {
         gap = std::max(gap, dist(grid[m * i + j].data(), s));
       }
     EXPECT_LT(limit_error, 1e-12) << "level " << k;
+    // The limit stencils on the level-k mesh put M · cage onto S exactly.
+    Subdivision sub;
+    sub.build(torus.mesh(), k, true);
+    RowSparse L;
+    limit_stencils(sub.refined_mesh(), L);
+    std::vector<double> fine(3 * size_t(sub.refined_vertex_count())), limit(fine.size());
+    sub.apply(torus.V.data(), 3, fine.data());
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(limit.data(), L.rows(), 3) =
+        L * Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(fine.data(), L.cols(), 3);
+    std::vector<P3> nodes;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < m; ++j) nodes.push_back(surface(i * h, j * h));
+    expect_same_set(limit, nodes, 1e-12);
     EXPECT_LT(gap, previous_gap / 3) << "level " << k << ": the control net approaches the surface ~4× per level";
     previous_gap = gap;
     expect_same_set(refine(torus, k), grid, 1e-12);
@@ -205,6 +218,20 @@ TEST(Subdivision, InfinitelySharpCubeStaysACube) {
   const Cage cube = read_cage("cube_quad.obj");
   for (int v = 0; v < 8; ++v)
     for (int a = 0; a < 3; ++a) EXPECT_EQ(sharp[3 * v + a], cube.V[3 * v + a]) << "corner " << v;
+  // Its limit surface is the cube too: limit points on the faces, corners kept, edges straight.
+  Subdivision sub;
+  sub.build(cube_with_sharp_edges(inf).mesh(), 2, true);
+  RowSparse L;
+  limit_stencils(sub.refined_mesh(), L);
+  const std::vector<double> fine = refine(cube_with_sharp_edges(inf), 2);
+  for (int r = 0; r < L.rows(); ++r) {
+    double p[3] = {0, 0, 0};
+    for (RowSparse::InnerIterator it(L, r); it; ++it)
+      for (int a = 0; a < 3; ++a) p[a] += it.value() * fine[3 * it.col() + a];
+    EXPECT_NEAR(std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}), 1.0, 1e-14) << "limit of vertex " << r;
+    if (r < 8)
+      for (int a = 0; a < 3; ++a) EXPECT_EQ(p[a], cube.V[3 * r + a]);
+  }
 }
 
 TEST(Subdivision, SemiSharpCreasesDecayByOnePerLevel) {

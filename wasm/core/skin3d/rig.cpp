@@ -195,6 +195,20 @@ const double* SubdivisionRig::refine(const double* cage) {
   return refined_.data();
 }
 
+const double* SubdivisionRig::limit(const double* cage) {
+  if (limit_stencils_.rows() != refined_vertex_count()) {
+    Subdivision with_edges;
+    with_edges.build(mesh_, levels(), true);
+    limit_stencils(with_edges.refined_mesh(), limit_stencils_);
+    limit_.assign(refined_.size(), 0.0);
+  }
+  refine(cage);
+  using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  Eigen::Map<Rows3>(limit_.data(), refined_vertex_count(), 3).noalias() =
+      limit_stencils_ * Eigen::Map<const Rows3>(refined_.data(), refined_vertex_count(), 3);
+  return limit_.data();
+}
+
 const double* SubdivisionRig::target(const double* T) {
   blend(rest_refined_, refined_weights_, T, target_);
   return target_.data();

@@ -73,6 +73,9 @@ class SubdivisionRig {
   // M · cage (#refined by 3) into refined().
   const double* refine(const double* cage);
   const std::vector<double>& refined() const { return refined_; }
+  // Limit positions of the level-k vertices of M · cage (#refined by 3, limit_stencils); the
+  // stencils are built on the first call (it rebuilds the level-k topology).
+  const double* limit(const double* cage);
   // Linear blend skinning of the refined rest vertices (#refined by 3).
   const double* target(const double* transforms);
   // Distance of M · cage to the target per refined vertex (into per_vertex, #refined, or null) and
@@ -107,7 +110,8 @@ class SubdivisionRig {
   double diagonal_ = 1;
   Eigen::MatrixXd O_;                  // #cage by 4H
   std::vector<double> planar_, cage_;  // update scratch (3 planes of #cage) and output
-  std::vector<double> naive_, refined_, target_;
+  std::vector<double> naive_, refined_, target_, limit_;
+  RowSparse limit_stencils_;
   bool ready_ = false;
 };
 

@@ -50,6 +50,34 @@ struct Rows {
   }
 };
 
+// How a vertex is refined (and limited): by its sharp edges (s > 0; boundary edges are +∞).
+struct VertexRule {
+  bool corner = false;  // three or more sharp edges, or a boundary vertex of a single face
+  int sharp = 0;        // number of sharp edges
+  int ends[2] = {-1, -1};
+  double alpha = 0;  // weight of the crease/corner rule against the smooth one
+};
+
+VertexRule classify(const PolyMesh& p, int v) {
+  VertexRule r;
+  int boundary = 0;
+  double sharpness = 0;
+  for (int q = p.vertex_edge_start[v]; q < p.vertex_edge_start[v + 1]; ++q) {
+    const int e = p.vertex_edges[q];
+    boundary += p.boundary_edge(e);
+    if (p.edge_sharpness[e] > 0) {
+      if (r.sharp < 2) r.ends[r.sharp] = p.other_end(e, v);
+      ++r.sharp;
+      sharpness += p.edge_sharpness[e];
+    }
+  }
+  const int faces = p.vertex_face_start[v + 1] - p.vertex_face_start[v];
+  r.corner = r.sharp >= 3 || (boundary > 0 && faces == 1);
+  // 1 on boundaries: s̄ = +∞.
+  r.alpha = r.corner && boundary > 0 ? 1.0 : r.sharp >= 2 ? std::min(1.0, sharpness / r.sharp) : 0.0;
+  return r;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -69,29 +97,19 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
   for (int v = 0; v < nv; ++v) {
     const int e_begin = p.vertex_edge_start[v], e_end = p.vertex_edge_start[v + 1];
     const int f_begin = p.vertex_face_start[v], f_end = p.vertex_face_start[v + 1];
-    const int valence = e_end - e_begin, faces = f_end - f_begin;
+    const int valence = e_end - e_begin;
     if (valence == 0) {  // a vertex no face uses: carried along unchanged
       rows.add(v, 1.0);
       rows.end_row();
       continue;
     }
-    int sharp = 0, boundary = 0, ends[2] = {-1, -1};
-    double sharpness = 0;
-    for (int q = e_begin; q < e_end; ++q) {
-      const int e = p.vertex_edges[q];
-      boundary += p.boundary_edge(e);
-      if (p.edge_sharpness[e] > 0) {
-        if (sharp < 2) ends[sharp] = p.other_end(e, v);
-        ++sharp;
-        sharpness += p.edge_sharpness[e];
-      }
-    }
-    const bool corner = sharp >= 3 || (boundary > 0 && faces == 1);
-    // Weight of the crease/corner rule against the smooth rule (1 on boundaries: s̄ = +∞).
-    const double alpha = corner && boundary > 0 ? 1.0 : sharp >= 2 ? std::min(1.0, sharpness / sharp) : 0.0;
+    const VertexRule rule = classify(p, v);
+    const bool corner = rule.corner;
+    const double alpha = rule.alpha;
+    const int* ends = rule.ends;
     if (corner) {
       rows.add(v, alpha);
-    } else if (sharp == 2) {
+    } else if (rule.sharp == 2) {
       rows.add(v, alpha * 0.75);
       rows.add(ends[0], alpha * 0.125);
       rows.add(ends[1], alpha * 0.125);
@@ -147,6 +165,38 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
     const int a = child.edge_vertices[2 * e], b = child.edge_vertices[2 * e + 1];
     if (a < nv && b >= edge0 && b < face0) child.edge_sharpness[e] = decay(p.edge_sharpness[b - edge0]);
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Limit positions
+// ---------------------------------------------------------------------------------------------
+
+void limit_stencils(const PolyMesh& p, RowSparse& L) {
+  Rows rows;
+  for (int v = 0; v < p.vertex_count; ++v) {
+    const int e_begin = p.vertex_edge_start[v], e_end = p.vertex_edge_start[v + 1];
+    const int n = e_end - e_begin;
+    const VertexRule rule = classify(p, v);
+    if (n == 0 || rule.corner) rows.add(v, n == 0 ? 1.0 : rule.alpha);
+    if (n > 0 && !rule.corner && rule.sharp == 2) {
+      rows.add(v, rule.alpha * 4 / 6);
+      rows.add(rule.ends[0], rule.alpha / 6);
+      rows.add(rule.ends[1], rule.alpha / 6);
+    }
+    if (n > 0 && rule.alpha < 1) {
+      const double w = (1 - rule.alpha) / (n * (n + 5.0));
+      rows.add(v, w * n * n);
+      for (int q = e_begin; q < e_end; ++q) rows.add(p.other_end(p.vertex_edges[q], v), 4 * w);
+      for (int q = p.vertex_face_start[v]; q < p.vertex_face_start[v + 1]; ++q) {
+        const int f = p.vertex_faces[q], base = p.face_start[f];
+        int k = 0;
+        while (p.face_vertices[base + k] != v) ++k;
+        rows.add(p.face_vertices[base + (k + 2) % 4], w);  // the diagonal of a quad
+      }
+    }
+    rows.end_row();
+  }
+  rows.to_matrix(p.vertex_count, L);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -40,6 +40,14 @@ using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 // faces only) and the matrix S (#child vertices by #parent vertices), child = S · parent.
 void refine_once(const PolyMesh& parent, RowSparse& S, PolyMesh& child, bool with_topology);
 
+// Limit positions of a mesh's vertices (a mesh of quads with topology and sharpness, e.g. the
+// level-k mesh of Subdivision::build(…, final_topology = true)): limit = L · vertices, with the
+// Catmull-Clark limit masks (Halstead, Kass & DeRose 1993): smooth vertex of valence n:
+// (n² v + 4 Σ edge neighbours + Σ diagonal neighbours) / (n (n + 5)); crease (two sharp edges):
+// (a + 4 v + b) / 6; corner (three or more, or a boundary vertex of one face): v; blended with
+// the smooth mask by the mean sharpness of the sharp edges when it is below 1, as in refine_once.
+void limit_stencils(const PolyMesh& quads, RowSparse& L);
+
 // The chain S_1 … S_k from a cage to its level-k refinement, kept factored (memory: Σ nnz(S_j),
 // far below the product M's on large cages), with the level-k faces (all quads).
 class Subdivision {
