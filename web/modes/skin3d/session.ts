@@ -1,6 +1,6 @@
 import { SubdivisionRig, type Cage } from '../../../src/index.js';
 import { messageOf } from '../../app/errors.js';
-import { Emitter } from '../../app/events.js';
+import { KeyedSession, type KeyedSessionEvents } from '../skin/keyed-session.js';
 import type { InFlight } from '../../app/in-flight.js';
 import { isRest, poseAt3D, poseTransforms, rigKey3D, setPose3D, type Skin3DSpec } from './spec.js';
 import { CancelledError, type Weights3DClient } from './weights-client.js';
@@ -18,16 +18,10 @@ export interface Rig3DStatus {
   stale: boolean;
 }
 
-export interface Session3DEvents extends Record<string, unknown> {
-  /** The spec changed (an edit, undo, the playhead); `live` while a gesture or playback is under way. */
-  spec: { spec: Skin3DSpec; live: boolean };
+export interface Session3DEvents extends KeyedSessionEvents<Skin3DSpec>, Record<string, unknown> {
   rig: Rig3DStatus;
   /** New posed cage and surface. */
   posed: { live: boolean };
-  /** The selected handle's id, or null. */
-  selection: number | null;
-  /** The playhead moved (seconds). */
-  time: number;
 }
 
 /** The target, naive and error data of one pose, for the overlays. */
@@ -56,11 +50,7 @@ interface BuiltRig {
  * rebuilds the rig (Shepard at once, BBW in the worker) while the previous rig keeps posing when
  * it can; every pose change poses the rig and refreshes the posed cage and surface.
  */
-export class Skin3DSession {
-  readonly events = new Emitter<Session3DEvents>();
-  private _spec: Skin3DSpec;
-  private _time = 0;
-  private _selected: number | null = null;
+export class Skin3DSession extends KeyedSession<Skin3DSpec, Session3DEvents> {
   private built: BuiltRig | null = null;
   private buildingKey: string | null = null;
   private failedKey: string | null = null;
@@ -84,21 +74,12 @@ export class Skin3DSession {
     private readonly work: InFlight,
     spec: Skin3DSpec,
   ) {
-    this._spec = spec;
+    super(spec);
     this._cage = cage.positions.slice();
     this.ensureRig();
     this.repose(false);
   }
 
-  get spec(): Skin3DSpec {
-    return this._spec;
-  }
-  get time(): number {
-    return this._time;
-  }
-  get selected(): number | null {
-    return this._selected;
-  }
   get status(): Rig3DStatus {
     return this._status;
   }
@@ -122,49 +103,13 @@ export class Skin3DSession {
   get progressReports(): number {
     return this._progressReports;
   }
-  /** The next free handle id. */
-  get nextId(): number {
-    return this._spec.handles.reduce((m, h) => Math.max(m, h.id + 1), 0);
-  }
   /** Whether the rig in use matches the spec (handles, weights, levels). */
   get ready(): boolean {
     return this.built !== null && this.built.key === this.key();
   }
 
-  indexOf(id: number | null): number {
-    return id === null ? -1 : this._spec.handles.findIndex((h) => h.id === id);
-  }
-
-  /** Replaces the spec (an edit, an undo): rebuilds the rig if needed and poses. */
-  apply(spec: Skin3DSpec, options: { live?: boolean } = {}): void {
-    const live = options.live ?? false;
-    this._spec = spec;
-    if (this._time > spec.duration) this._time = spec.duration;
-    if (this._selected !== null && this.indexOf(this._selected) < 0) this.select(null);
-    this.ensureRig();
-    this.repose(live);
-    this.events.emit('spec', { spec, live });
-  }
-
-  /** Starts from a saved spec with the playhead at `time` (the saved pose wins over the animation). */
-  restore(spec: Skin3DSpec, time: number): void {
-    this._time = Math.min(spec.duration, Math.max(0, time));
-    this.apply(spec);
-    this.events.emit('time', this._time);
-  }
-
-  select(id: number | null): void {
-    if (id === this._selected) return;
-    this._selected = id;
-    this.events.emit('selection', id);
-  }
-
-  /** Moves the playhead; with keyframes, the pose follows the animation. */
-  setTime(time: number, options: { live?: boolean } = {}): void {
-    const t = Math.min(this._spec.duration, Math.max(0, time));
-    this._time = t;
-    this.events.emit('time', t);
-    if (this._spec.keyframes.length > 0) this.apply(setPose3D(this._spec, poseAt3D(this._spec.keyframes, t)), options);
+  protected posedAt(time: number): Skin3DSpec {
+    return setPose3D(this._spec, poseAt3D(this._spec.keyframes, time));
   }
 
   /**
@@ -234,7 +179,7 @@ export class Skin3DSession {
   }
 
   /** Starts a build when the rig in use does not match the spec (and none is under way for it). */
-  private ensureRig(): void {
+  protected ensureRig(): void {
     const key = this.key();
     if (this.built?.key === key) {
       this.cancelBuild();
@@ -323,7 +268,7 @@ export class Skin3DSession {
    * Poses the rig for the spec's pose into the posed cage and surface (the rest pose is the rest
    * cage and surface exactly). Without a rig for these handles the surface stays as it was.
    */
-  private repose(live: boolean): void {
+  protected repose(live: boolean): void {
     const b = this.built;
     if (!b) return;
     this.poseVersion++;
