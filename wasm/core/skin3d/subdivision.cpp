@@ -217,7 +217,7 @@ void Subdivision::build(const PolyMesh& cage, int levels, bool final_topology) {
 }
 
 void Subdivision::apply(const double* cage, int cols, double* refined) {
-  if (scratch_.size() + 1 != steps_.size() || (!scratch_.empty() && scratch_[0].cols() != cols)) {
+  if (scratch_.size() + 1 != steps_.size() || (!scratch_.empty() && scratch_[0].rows() != cols)) {
     scratch_.clear();
     for (size_t j = 0; j + 1 < steps_.size(); ++j) scratch_.emplace_back(cols, steps_[j].rows());
   }
