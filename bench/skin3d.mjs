@@ -151,8 +151,9 @@ ${speed}
 Budgets (issue 18): a ~4k-vertex cage ≤ 1 s precompute and ≤ 0.1 ms per update; a ~20k-vertex
 cage ≤ 3 s and ≤ 0.5 ms (paper, Table 2: rabbit, 4,139 vertices, 9 s and 0.2 ms native). This run:
 ${verdict(small, 1000, 0.1)}; ${verdict(large, 3000, 0.5)}. Updates allocate nothing. Where the
-precompute goes (native profile of the car refined once): about 60% to the sparse products of Â = S₁ᵀ(S₂ᵀ(S₃ᵀ D S₃)S₂)S₁ over the ~64×
-refined vertices, 20% to building the S_j and 15% to the LDLᵀ and its solves.
+precompute goes (native perf profile of the car refined once, setup + precompute): ~35% the sparse
+products of Â = S₁ᵀ(S₂ᵀ(S₃ᵀ D S₃)S₂)S₁ and their transposes over the ~64× refined vertices, ~15%
+building the S_j, ~7% Ŵ = Mᵀ G, ~5% the LDLᵀ and its 4·#H solves, the rest memory traffic.
 
 Accuracy on every shared cage, K = 3, 5 random poses each with 4 and 8 handles (as above): the
 area-weighted RMS distance of the level-3 surface to the target (the skinned refined rest

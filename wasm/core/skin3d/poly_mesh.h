@@ -33,7 +33,7 @@ struct PolyMesh {
 
   // ---- Vertex adjacency (build_topology) ---------------------------------------------------------
   std::vector<int> vertex_edge_start, vertex_edges;  // CSR: edges incident to each vertex
-  std::vector<int> vertex_face_start, vertex_faces;  // CSR: faces incident to each vertex (with repeats none)
+  std::vector<int> vertex_face_start, vertex_faces;  // CSR: faces incident to each vertex
 
   int face_count() const { return int(face_start.size()) - 1; }
   int face_size(int f) const { return face_start[f + 1] - face_start[f]; }

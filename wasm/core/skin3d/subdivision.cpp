@@ -217,7 +217,7 @@ void Subdivision::build(const PolyMesh& cage, int levels, bool final_topology) {
 }
 
 void Subdivision::apply(const double* cage, int cols, double* refined) {
-  if (scratch_.size() + 1 != steps_.size() || (!scratch_.empty() && scratch_[0].cols() != cols)) {
+  if (scratch_.size() + 1 != steps_.size() || (!scratch_.empty() && scratch_[0].rows() != cols)) {
     scratch_.clear();
     for (size_t j = 0; j + 1 < steps_.size(); ++j) scratch_.emplace_back(cols, steps_[j].rows());
   }
@@ -248,11 +248,34 @@ Eigen::MatrixXd Subdivision::apply_transpose(int cols, const std::function<void(
 
 namespace {
 
+// X · Y for row-major sparse matrices, row by row (Gustavson): row i gathers x_ik · (row k of Y),
+// written sorted straight into row-major arrays (Eigen's product goes through two storage-order
+// conversions: ~25% slower here).
+RowSparse multiply(const RowSparse& X, const RowSparse& Y) {
+  const int rows = int(X.rows()), cols = int(Y.cols());
+  std::vector<double> acc(size_t(cols), 0.0), values;
+  std::vector<int> mark(size_t(cols), -1), touched, outer{0}, inner;
+  outer.reserve(size_t(rows) + 1);
+  for (int i = 0; i < rows; ++i) {
+    touched.clear();
+    for (RowSparse::InnerIterator xk(X, i); xk; ++xk)
+      for (RowSparse::InnerIterator yj(Y, xk.col()); yj; ++yj) {
+        const int j = int(yj.col());
+        if (mark[j] != i) mark[j] = i, acc[j] = 0, touched.push_back(j);
+        acc[j] += xk.value() * yj.value();
+      }
+    std::sort(touched.begin(), touched.end());
+    for (int j : touched) inner.push_back(j), values.push_back(acc[j]);
+    outer.push_back(int(inner.size()));
+  }
+  return Eigen::Map<const RowSparse>(rows, cols, int(inner.size()), outer.data(), inner.data(), values.data());
+}
+
 // Sᵀ A S for a symmetric sparse A: (A S) first, then Sᵀ (A S) — fewer products than one triple
 // loop, since S has only a few entries per row.
 RowSparse congruence(const RowSparse& S, const RowSparse& A) {
-  const RowSparse AS = A * S, St = S.transpose();
-  return St * AS;
+  const RowSparse St = S.transpose();
+  return multiply(St, multiply(A, S));
 }
 
 }  // namespace
@@ -262,7 +285,9 @@ Eigen::SparseMatrix<double> Subdivision::gram(const Eigen::VectorXd& D) const {
   A.reserve(Eigen::VectorXi::Ones(D.size()));
   for (Eigen::Index r = 0; r < D.size(); ++r) A.insert(r, r) = D[r];
   for (size_t j = steps_.size(); j-- > 0;) A = congruence(steps_[j], A);
-  return A;  // symmetric: the column-major copy holds the same matrix
+  // Symmetric: its row-major arrays are also its column-major ones (no conversion).
+  return Eigen::Map<const Eigen::SparseMatrix<double>>(A.rows(), A.cols(), A.nonZeros(), A.outerIndexPtr(),
+                                                       A.innerIndexPtr(), A.valuePtr());
 }
 
 RowSparse Subdivision::compose() const {

@@ -82,7 +82,7 @@ class Subdivision {
   int cage_vertices_ = 0;
   std::vector<RowSparse> steps_;
   PolyMesh refined_;
-  std::vector<Eigen::MatrixXd> scratch_;  // per intermediate level, row-major data in a #rows·cols buffer
+  std::vector<Eigen::MatrixXd> scratch_;  // per intermediate level: cols by #rows, i.e. #rows by cols row-major
 };
 
 }  // namespace splinekit::skin3d

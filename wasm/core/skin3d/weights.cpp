@@ -51,8 +51,8 @@ skin::WeightsReport surface_bbw_weights(SubdivisionRig& rig, const double* handl
     for (int k = 0; k < faces.face_size(f); ++k)
       used[v[k]] = 1, parent[find_root(parent, v[k])] = find_root(parent, v[0]);
   }
-  // Snap the handles; vertices of no face keep their own component and get a handle-less error
-  // below, so they are tied to their nearest used vertex instead.
+  // Snap each handle to its nearest vertex of the surface (vertices no face uses are skipped, and
+  // left out of the check that every connected part has a handle).
   std::vector<int32_t> snapped(static_cast<size_t>(H));
   for (int i = 0; i < H; ++i) {
     const Vec3 h(handles[3 * i], handles[3 * i + 1], handles[3 * i + 2]);
