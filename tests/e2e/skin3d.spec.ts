@@ -182,7 +182,7 @@ test('3D Skin: handles on the surface, a gizmo drag poses it, undo restores the 
   expect(obj.filter((l) => l.startsWith('f '))).toHaveLength(88);
   expect(obj.filter((l) => l.startsWith("t crease"))).toHaveLength(4);
   expect(vs).toHaveLength(posedCage.length);
-  vs.forEach((v, i) => expect(Math.abs(v - posedCage[i])).toBeLessThan(1e-6));
+  expect(Math.max(...vs.map((v, i) => Math.abs(v - posedCage[i])))).toBeLessThan(1e-6);
 
   // The animation as glTF: loaded back with three.js. One morph target per frame: the keyframes
   // and, between them, a frame every tenth of a second; the weights track switches them on at
@@ -218,15 +218,20 @@ test('3D Skin: handles on the surface, a gizmo drag poses it, undo restores the 
     // GLTFLoader reads glTF's morph targets as offsets from the base.
     return [base.getX(i) + d.getX(i), base.getY(i) + d.getY(i), base.getZ(i) + d.getZ(i)];
   };
-  for (let i = 0; i < s.refinedVertices; i += 7) {
+  // Largest deviations over all vertices (one expect each: Playwright's expect is not free).
+  const u = times[n >> 1] / times[n - 1];
+  let offFirst = 0, offLast = 0, offMid = 0;
+  for (let i = 0; i < s.refinedVertices; i++) {
     const first = absolute(0, i), last = absolute(n - 1, i), mid = absolute(n >> 1, i);
-    const u = times[n >> 1] / times[n - 1];
     for (let c = 0; c < 3; c++) {
-      expect(Math.abs(first[c] - posedSurface[3 * i + c])).toBeLessThan(1e-4);
-      expect(Math.abs(last[c] - rest[3 * i + c])).toBeLessThan(1e-4);
-      expect(Math.abs(mid[c] - ((1 - u) * first[c] + u * last[c]))).toBeLessThan(1e-4);
+      offFirst = Math.max(offFirst, Math.abs(first[c] - posedSurface[3 * i + c]));
+      offLast = Math.max(offLast, Math.abs(last[c] - rest[3 * i + c]));
+      offMid = Math.max(offMid, Math.abs(mid[c] - ((1 - u) * first[c] + u * last[c])));
     }
   }
+  expect(offFirst, 'first frame = the posed surface').toBeLessThan(1e-4);
+  expect(offLast, 'last frame = the rest surface').toBeLessThan(1e-4);
+  expect(offMid, 'the middle frame = the rig at its time').toBeLessThan(1e-4);
 });
 
 test('3D Skin: a bad cage keeps the cage shown; BBW weights come from the worker with progress; another sample and undo; the autosave after a reload', async ({ page }) => {

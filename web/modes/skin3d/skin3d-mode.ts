@@ -252,7 +252,7 @@ export class Skin3DMode implements Mode {
     try {
       const cage = parseCage(text, name);
       // No handles yet: the surface is built at once (a saved spec's handles and weights follow).
-      const levels = options.spec?.levels ?? (cage.positions.length / 3 > 2000 ? 1 : EMPTY_SPEC3D.levels);
+      const levels = options.spec?.levels ?? defaultLevels(cage.faceSizes.length);
       next = new Skin3DSession(cage, name, text, this.client, this.work, { ...EMPTY_SPEC3D, levels });
       if (!next.rig) {
         const message = next.status.message ?? 'the surface could not be built';
@@ -760,6 +760,16 @@ export class Skin3DMode implements Mode {
     }
     return null;
   }
+}
+
+/** Refined vertices the default levels stay under (about 4^levels per cage face). */
+const DEFAULT_MAX_REFINED = 60_000;
+
+/** The levels a new cage starts with: the default (3), fewer for large cages. */
+function defaultLevels(faces: number): number {
+  let levels = EMPTY_SPEC3D.levels;
+  while (levels > 1 && faces * 4 ** levels > DEFAULT_MAX_REFINED) levels--;
+  return levels;
 }
 
 /** The diagonal of the bounding box of points (3 numbers each); 1 for none. */

@@ -40,7 +40,7 @@ export interface Skin3DSpec extends Animated<HandlePose> {
   readonly levels: number;
 }
 
-export const EMPTY_SPEC3D: Skin3DSpec = { handles: [], pose: [], keyframes: [], weights: 'shepard', levels: 2, duration: 2 };
+export const EMPTY_SPEC3D: Skin3DSpec = { handles: [], pose: [], keyframes: [], weights: 'shepard', levels: 3, duration: 2 };
 
 /** Whether two poses of the same handles are equal (within `eps` per number). */
 export function samePoses(a: readonly HandlePose[], b: readonly HandlePose[], eps = 1e-9): boolean {
