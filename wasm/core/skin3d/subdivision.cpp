@@ -255,7 +255,12 @@ RowSparse multiply(const RowSparse& X, const RowSparse& Y) {
   const int rows = int(X.rows()), cols = int(Y.cols());
   std::vector<double> acc(size_t(cols), 0.0), values;
   std::vector<int> mark(size_t(cols), -1), touched, outer{0}, inner;
-  outer.reserve(size_t(rows) + 1);
+  // An upper bound of the products (one pass over X) sizes the output once.
+  size_t bound = 0;
+  for (int k = 0; k < X.outerSize(); ++k)
+    for (RowSparse::InnerIterator xk(X, k); xk; ++xk)
+      bound += size_t(Y.outerIndexPtr()[xk.col() + 1] - Y.outerIndexPtr()[xk.col()]);
+  outer.reserve(size_t(rows) + 1), inner.reserve(bound), values.reserve(bound);
   for (int i = 0; i < rows; ++i) {
     touched.clear();
     for (RowSparse::InnerIterator xk(X, i); xk; ++xk)
