@@ -4,7 +4,7 @@
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
 //
 // `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
-// editor-drag, fidelity, skin-weight-steps, edit) and replaces just their text in BENCHMARKS.md (and their entries in
+// editor-drag, fidelity, skin-weight-steps, edit, morph, skin3d) and replaces just their text in BENCHMARKS.md (and their entries in
 // build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -18,6 +18,7 @@ import { dragBenchmarks, dragSection } from './editor-drag.mjs';
 import { fidelityFigures, fidelitySection } from './fidelity.mjs';
 import { morphBenchmarks, morphSection } from './morph.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
+import { skin3dBenchmarks, skin3dSection } from './skin3d.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
 import { time } from './stats.mjs';
 
@@ -45,6 +46,7 @@ const sections = {
   edit: { key: 'edit', heading: '## Edit (', before: '## Memory and size', run: () => editBenchmarks(), markdown: editSection },
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
   morph: { key: 'morph', heading: '## Morph', before: '## Editor (Chromium)', run: () => morphBenchmarks(data), markdown: morphSection },
+  skin3d: { key: 'skin3d', heading: '## Skin 3D', before: '## Surface', run: () => skin3dBenchmarks(data), markdown: skin3dSection },
 };
 
 /**
@@ -150,6 +152,10 @@ const weightsSpeed = skinWeightsSpeed(data);
 const weightSteps = { ...skinWeightSteps(data), load: load() };
 console.log(`skin weight steps: ${JSON.stringify(weightSteps)}`);
 
+// ---- skinning subdivision surfaces (3D) ----------------------------------------------------------
+const skin3d = { ...skin3dBenchmarks(data), load: load() };
+console.log(`skin3d: ${JSON.stringify(skin3d.speed)}`);
+
 // ---- the editor in Chromium -------------------------------------------------------------------
 const editor = { ...(await editorBenchmarks(root, data, { log: console.log })), load: load() };
 const drag = { ...(await dragBenchmarks(root, data, { log: console.log })), load: load() };
@@ -167,7 +173,7 @@ const morph = morphBenchmarks(data);
 console.log(`morph: ${JSON.stringify(morph.speed)}`);
 
 // ---- report -----------------------------------------------------------------------------------
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, morph, editor_drag: drag, fidelity, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, skin3d, editor, morph, editor_drag: drag, fidelity, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -242,6 +248,7 @@ All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${
 (the fit must beat that baseline on every file and by ≥ 2× on average).
 
 ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })}
+${skin3dSection(skin3d, { date, machine, load: skin3d.load })}
 ${surfaceSection(surface)}
 ${morphSection(morph, { date, machine, load: load() })}
 ${editorSection(editor, { date, machine, load: editor.load })}

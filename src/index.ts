@@ -57,6 +57,15 @@ export { buildDomain, type Domain, type DomainOptions } from './skin/domain.js';
 export { SkinWeights, type BbwOptions, type DomainWeightKind, type WeightMesh } from './skin/weights.js';
 export { computeDomainWeights, domainWeights, outlineSamples, type DomainWeightsInput } from './skin/auto-weights.js';
 export { animatedSVG, interpolateMatrix, poseAt, type AnimationOptions, type Keyframe } from './skin/animation.js';
+export { parseCage, cageToOBJ, type Cage, type CageCrease } from './skin3d/cage.js';
+export {
+  SubdivisionRig,
+  refineCage,
+  type Skin3dError,
+  type Skin3dMethod,
+  type SubdivisionRigOptions,
+  type WeightSpec,
+} from './skin3d/rig.js';
 export {
   SurfaceMesh,
   type GeodesicPath,

@@ -68,3 +68,20 @@ export function writeJSON(path: string, value: unknown): void {
   if (path === '-') process.stdout.write(text);
   else writeFileSync(path, text);
 }
+
+/** The median of `xs` (the upper one of an even count). */
+export function median(xs: number[]): number {
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.floor(s.length / 2)];
+}
+
+/** Median milliseconds of `fn` over `runs` calls after `warmup` calls (the update timings the commands report). */
+export function medianMs(fn: () => void, runs = 100, warmup = 10): number {
+  const times: number[] = [];
+  for (let i = 0; i < warmup + runs; i++) {
+    const a = performance.now();
+    fn();
+    if (i >= warmup) times.push(performance.now() - a);
+  }
+  return median(times);
+}

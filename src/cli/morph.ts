@@ -1,7 +1,7 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
 import { DEFAULT_MAX_BYTES, MORPH_INTERPOLATIONS, Morph, SplinekitError, parseSVG, type MorphInterpolation, type MorphPin } from '../index.js';
-import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
+import { UsageError, median, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
 const usage = `usage: splinekit morph <a.svg> <b.svg> [--frames N] [--pins pins.json]
        [--interpolation linear|intrinsic] [--out-dir D] [--json out.json]
@@ -23,11 +23,6 @@ function readPins(path: string): MorphPin[] {
     if (!point(q?.a) || !point(q?.b)) throw new SplinekitError('invalid-input', `${basename(path)}: pin ${i} needs "a" and "b" as [x, y] with finite numbers`);
     return { a: q.a as [number, number], b: q.b as [number, number] };
   });
-}
-
-function median(xs: number[]): number {
-  const s = [...xs].sort((a, b) => a - b);
-  return s[Math.floor(s.length / 2)];
 }
 
 export const morph: Command = {

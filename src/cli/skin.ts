@@ -2,7 +2,7 @@ import { writeFileSync } from 'node:fs';
 import { basename } from 'node:path';
 import { DEFAULT_MAX_BYTES, SkinRig, SplinekitError, parseSVG, type AffineMatrix, type SkinHandle, type SkinRigOptions } from '../index.js';
 import { domainWeights } from '../skin/auto-weights.js';
-import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
+import { UsageError, medianMs, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
 const usage = `usage: splinekit skin <in.svg> --handles <handles.json> --pose <pose.json>
        [--weights shepard|harmonic|bbw] [--method fit|naive] [--flexible] [--samples N]
@@ -41,11 +41,6 @@ function readPose(path: string, count: number): AffineMatrix[] {
   });
 }
 
-function median(xs: number[]): number {
-  const s = [...xs].sort((a, b) => a - b);
-  return s[Math.floor(s.length / 2)];
-}
-
 export const skin: Command = {
   summary: 'skin an SVG with handles: the output stays Bézier splines',
   usage,
@@ -82,13 +77,7 @@ export const skin: Command = {
     const precomputeMs = performance.now() - t0;
     try {
       const naive = values.method === 'naive';
-      rig.pose(pose);
-      const times: number[] = [];
-      for (let i = 0; i < 110; i++) {
-        const a = performance.now();
-        rig.pose(pose);
-        if (i >= 10) times.push(performance.now() - a);
-      }
+      const updateMs = medianMs(() => rig.pose(pose));
       let relaxMs = 0;
       if (values.flexible && !naive) {
         const a = performance.now();
@@ -105,7 +94,7 @@ export const skin: Command = {
         weights: values.weights,
         method: values.method,
         precompute_ms: precomputeMs,
-        update_ms: median(times),
+        update_ms: updateMs,
         relax_ms: relaxMs,
         error_rms: err.rms,
       };

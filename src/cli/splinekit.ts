@@ -11,9 +11,10 @@ import { edit } from './edit.js';
 import { info } from './info.js';
 import { morph } from './morph.js';
 import { skin } from './skin.js';
+import { skin3d } from './skin3d.js';
 import { geodesic, trace } from './surface.js';
 
-const COMMANDS: Record<string, Command> = { info, skin, geodesic, trace, edit, morph };
+const COMMANDS: Record<string, Command> = { info, skin, skin3d, geodesic, trace, edit, morph };
 
 function help(): string {
   const lines = ['usage: splinekit <command> [options]', '', 'commands:'];

@@ -63,6 +63,50 @@ export interface SkinRigHandle extends EmbindObject {
   errorMessage(): string;
 }
 
+/** wasm/bindings/skin3d_bindings.cpp — Skin3dRigHandle (see the flow comment there). */
+export interface Skin3dRigHandle extends EmbindObject {
+  resize(vertices: number, faceIndices: number, faces: number, creases: number): void;
+  positionsIn(): Float64Array;
+  faceSizesIn(): Int32Array;
+  faceIndicesIn(): Int32Array;
+  creaseEdgesIn(): Int32Array;
+  creaseSharpnessIn(): Float64Array;
+  setup(levels: number, handleCount: number): number;
+  refineCage(levels: number): number;
+  refinedCagePositions(): Float64Array;
+  refinedCageQuads(): Int32Array;
+  refinedCageCreaseEdges(): Int32Array;
+  refinedCageCreaseSharpness(): Float64Array;
+  handles(): Float64Array;
+  useShepard(power: number): void;
+  bbw(level: number, maxIterations: number, multiplierTolerance: number): number;
+  bbwLevel(maxVertices: number): number;
+  refinedWeights(): Float64Array;
+  cageWeights(): Float64Array;
+  prolongateWeights(): void;
+  restrictWeights(): void;
+  precompute(): number;
+  transforms(): Float64Array;
+  update(): void;
+  cage(): Float64Array;
+  naive(): Float64Array;
+  cageIn(): Float64Array;
+  /** source: 0 the fit, 1 the naive cage, 2 cageIn(). */
+  refine(source: number): Float64Array;
+  /** source as refine(). */
+  limit(source: number): Float64Array;
+  target(): Float64Array;
+  error(source: number): number;
+  perVertexError(): Float64Array;
+  restRefined(): Float64Array;
+  refinedTriangles(): Int32Array;
+  cageVertexCount(): number;
+  refinedVertexCount(): number;
+  memoryM(): number;
+  memoryO(): number;
+  errorMessage(): string;
+}
+
 /** wasm/bindings/surface_bindings.cpp — SurfaceMeshHandle (see the flow comment there). */
 export interface SurfaceMeshHandle extends EmbindObject {
   resizeMesh(vertices: number, faces: number): void;
@@ -123,6 +167,7 @@ export interface SplinekitCoreModule {
   MorphHandle: { new (): MorphHandle };
   SurfaceMeshHandle: { new (): SurfaceMeshHandle };
   SkinRigHandle: { new (): SkinRigHandle };
+  Skin3dRigHandle: { new (): Skin3dRigHandle };
   SplineSetHandle: { new (): SplineSetHandle };
   BezierScratch: { new (): BezierScratch };
   gramMatrix(): number[];

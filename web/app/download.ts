@@ -1,8 +1,8 @@
 import { h } from '../ui/dom.js';
 
-/** Offers `text` as a file download (an SVG unless told otherwise). */
-export function download(text: string, file: string, type = 'image/svg+xml'): void {
-  const url = URL.createObjectURL(new Blob([text], { type }));
+/** Offers `data` (text, or bytes) as a file download (an SVG unless told otherwise). */
+export function download(data: string | ArrayBuffer, file: string, type = 'image/svg+xml'): void {
+  const url = URL.createObjectURL(new Blob([data], { type }));
   const a = h('a', { href: url, download: file });
   document.body.append(a);
   a.click();

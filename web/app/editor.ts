@@ -3,6 +3,7 @@ import { DocumentMode } from '../modes/document-mode.js';
 import { EditMode } from '../modes/edit/edit-mode.js';
 import { MorphMode } from '../modes/morph/morph-mode.js';
 import { SkinMode } from '../modes/skin/skin-mode.js';
+import { Skin3DMode } from '../modes/skin3d/skin3d-mode.js';
 import { isMeshFile } from '../modes/surface/mesh-files.js';
 import { SurfaceMode } from '../modes/surface/surface-mode.js';
 import { ControlOverlay } from '../overlay/overlay.js';
@@ -41,6 +42,7 @@ export class Editor {
   readonly skin = new SkinMode();
   readonly morph = new MorphMode();
   readonly surface = new SurfaceMode();
+  readonly skin3d = new Skin3DMode();
   readonly edit = new EditMode();
   samples: Sample[] = [];
   /** What the drop hint says (Surface mode opens meshes). */
@@ -73,6 +75,7 @@ export class Editor {
     this.modes.register(new DocumentMode());
     this.modes.register(this.skin);
     this.modes.register(this.surface);
+    this.modes.register(this.skin3d);
     this.modes.register(this.morph);
     this.modes.register(this.edit);
     this.status.el.prepend(this.surface.statusEl);
@@ -108,6 +111,8 @@ export class Editor {
   }
 
   async openFile(file: File): Promise<boolean> {
+    // In 3D Skin mode an OBJ is a cage.
+    if (this.modes.active === this.skin3d && /\.obj$/i.test(file.name)) return this.skin3d.openFile(file);
     // Meshes go to Surface mode; there, an SVG is a drawing to place on the mesh.
     if (isMeshFile(file.name) || this.modes.active === this.surface) {
       if (this.modes.active !== this.surface) this.modes.activate(this.surface.id);
@@ -146,11 +151,13 @@ export class Editor {
   /** Fits the active view (the 3D view in Surface mode). */
   fit(): void {
     if (this.modes.active === this.surface) this.surface.fit();
+    else if (this.modes.active === this.skin3d) this.skin3d.fit();
     else this.view.fit();
   }
 
   zoom(factor: number): void {
     if (this.modes.active === this.surface) this.surface.zoom(factor);
+    else if (this.modes.active === this.skin3d) this.skin3d.zoom(factor);
     else this.view.zoom(factor);
   }
 
@@ -241,10 +248,16 @@ export class Editor {
       toolbar.setModes(this.modes.list, mode);
       this.panel.setHeading(mode.title, mode.description);
       this.panel.setModeKeys(mode.keys ?? []);
-      const surface = mode === this.surface;
-      toolbar.fileInput.accept = surface ? SurfaceMode.accept : '.svg,image/svg+xml';
-      this.dropText.textContent = surface ? 'Drop a mesh to open it, or an SVG to place on the mesh' : 'Drop an SVG file to open it';
-      toolbar.setOpenTitle(surface ? 'Open a mesh (OBJ, OFF, PLY, STL, glTF, GLB), or an SVG to place on it — or drop one on the window' : `Open an SVG file (${MOD}O), or drop one on the window`);
+      const surface = mode === this.surface, skin3d = mode === this.skin3d;
+      toolbar.fileInput.accept = surface ? SurfaceMode.accept : skin3d ? Skin3DMode.accept : '.svg,image/svg+xml';
+      this.dropText.textContent = surface ? 'Drop a mesh to open it, or an SVG to place on the mesh' : skin3d ? 'Drop an OBJ cage to open it' : 'Drop an SVG file to open it';
+      toolbar.setOpenTitle(
+        surface
+          ? 'Open a mesh (OBJ, OFF, PLY, STL, glTF, GLB), or an SVG to place on it — or drop one on the window'
+          : skin3d
+            ? `Open a quad cage (OBJ with n-gons and crease tags; ${MOD}O), or drop one on the window`
+            : `Open an SVG file (${MOD}O), or drop one on the window`,
+      );
       this.autosaveSession();
     });
 
@@ -271,6 +284,7 @@ export class Editor {
       else if (mod && key === 'o') this.toolbar.fileInput.click();
       else if (mod && key === 's') {
         if (this.modes.active === this.surface) this.surface.saveDrawingFile();
+        else if (this.modes.active === this.skin3d) this.skin3d.saveFile();
         else this.exportSVG();
       }
       else if (mod || e.altKey || target instanceof HTMLSelectElement) handled = false;

@@ -2,6 +2,7 @@ import { anchorJunction, type ContinuityKind, type MeshPoint } from '../../src/i
 import type { EditTestState } from '../modes/edit/edit-mode.js';
 import type { MorphTestState } from '../modes/morph/morph-mode.js';
 import type { SkinTestState } from '../modes/skin/skin-mode.js';
+import type { Skin3DTestState } from '../modes/skin3d/skin3d-mode.js';
 import type { SurfaceTestState } from '../modes/surface/surface-mode.js';
 import type { Editor } from './editor.js';
 
@@ -44,6 +45,8 @@ export interface EditorTestHook {
   skinGizmoOnScreen(): { center: { x: number; y: number }; knob: { x: number; y: number }; ring: number } | null;
   /** Surface mode. */
   surface: SurfaceTestHook;
+  /** 3D Skin mode. */
+  skin3d: Skin3DTestHook;
   /** Edit mode: tool, settings, curves, selection, the active window's preview. */
   edit(): EditTestState;
   /** Where control point `point` of Edit curve `curve` is drawn (client pixels), or null. */
@@ -68,6 +71,19 @@ export interface SurfaceTestHook {
   meshPointAt(x: number, y: number): MeshPoint | null;
   /** Vertex positions of the given faces, 9 numbers per face (x y z of its 3 vertices). */
   faceVertices(faces: number[]): number[];
+}
+
+/** 3D Skin mode's window for tests (window.splinekitEditor.skin3d). */
+export interface Skin3DTestHook {
+  /** Resolves when a cage is shown and no load or rig build is under way. */
+  ready(): Promise<void>;
+  state(): Skin3DTestState;
+  /** Where a world point is on screen (client pixels), or null (behind the camera). */
+  project(x: number, y: number, z: number): { x: number; y: number } | null;
+  /** A point on the gizmo's axis handle (client pixels) and the axis's screen direction, or null. */
+  gizmoAxis(axis: 'X' | 'Y' | 'Z'): { x: number; y: number; dx: number; dy: number } | null;
+  /** The animated glTF the export writes (binary), as plain bytes. */
+  gltf(): Promise<number[]>;
 }
 
 declare global {
@@ -156,6 +172,19 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
       const at = editor.morph.anchorOnCanvas(which, k);
       return at ? client(at[0], at[1]) : null;
     },
+    skin3d: Object.freeze({
+      ready: () => editor.skin3d.ready(),
+      state: () => editor.skin3d.testState(),
+      project(x: number, y: number, z: number) {
+        const at = editor.skin3d.project(x, y, z);
+        return at ? canvas3dClient(editor.skin3d.view?.canvas, at.sx, at.sy) : null;
+      },
+      gizmoAxis(axis: 'X' | 'Y' | 'Z') {
+        const at = editor.skin3d.gizmoAxisOnCanvas(axis);
+        return at ? { ...canvas3dClient(editor.skin3d.view?.canvas, at.sx, at.sy), dx: at.dx, dy: at.dy } : null;
+      },
+      gltf: async () => [...new Uint8Array(await editor.skin3d.gltfBytes())],
+    }),
     surface: Object.freeze({
       ready: () => editor.surface.ready(),
       state: () => editor.surface.testState(),
@@ -171,9 +200,12 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
     }),
   };
   /** 3D canvas pixels → client pixels. */
-  function surfaceClient(sx: number, sy: number): { x: number; y: number } {
-    const r = editor.surface.canvas?.getBoundingClientRect();
+  function canvas3dClient(canvas: HTMLCanvasElement | null | undefined, sx: number, sy: number): { x: number; y: number } {
+    const r = canvas?.getBoundingClientRect();
     return { x: (r?.left ?? 0) + sx, y: (r?.top ?? 0) + sy };
+  }
+  function surfaceClient(sx: number, sy: number): { x: number; y: number } {
+    return canvas3dClient(editor.surface.canvas, sx, sy);
   }
   /** Canvas pixels → client pixels. */
   function client(sx: number, sy: number): { x: number; y: number } {

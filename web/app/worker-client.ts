@@ -92,3 +92,32 @@ export class WorkerClient<Request extends WorkerMessage, Reply extends WorkerMes
     return worker;
   }
 }
+
+/** Thrown (as a rejection) when a newer request or cancel() replaced a computation. */
+export class CancelledError extends Error {
+  constructor() {
+    super('cancelled');
+    this.name = 'CancelledError';
+  }
+}
+
+/**
+ * A worker for one long computation at a time (e.g. weights): cancel() stops the one running by
+ * terminating the worker (a computation is one synchronous call in there, so nothing short of
+ * that stops it); the next request starts a fresh one.
+ */
+export class CancellableWorker<Request extends WorkerMessage, Reply extends WorkerMessage> extends WorkerClient<Request, Reply> {
+  /** Whether a computation is running. */
+  get busy(): boolean {
+    return this.size > 0;
+  }
+
+  /** Stops the running computation (its promise rejects with CancelledError). */
+  cancel(): void {
+    if (this.busy) this.terminate(new CancelledError());
+  }
+
+  dispose(): void {
+    this.terminate(new CancelledError());
+  }
+}

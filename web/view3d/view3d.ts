@@ -210,6 +210,25 @@ export class View3D {
     return this.shown;
   }
 
+  /** The shown mesh's geometry (for a mode that deforms it or colours its vertices), or null. */
+  get geometry(): BufferGeometry | null {
+    return this.meshObject?.geometry ?? null;
+  }
+
+  /**
+   * The shown mesh's positions changed in place (a deformation): normals, bounds and picking
+   * follow (the picking hierarchy is built again on the next pick).
+   */
+  meshChanged(): void {
+    const m = this.meshObject, shown = this.shown;
+    if (!m || !shown) return;
+    m.geometry.getAttribute('position').needsUpdate = true;
+    m.geometry.computeVertexNormals();
+    m.geometry.computeBoundingSphere();
+    this.bvh = null;
+    this.requestRender();
+  }
+
   clearMesh(): void {
     if (!this.meshObject) return;
     this.scene.remove(this.meshObject);
@@ -283,7 +302,8 @@ export class View3D {
 
   /** The mesh point under a canvas point (nearest hit, either side), with the hit's position. */
   pick(sx: number, sy: number): (RayHit & { point: Vector3 }) | null {
-    if (!this.bvh) return null;
+    if (!this.shown) return null;
+    this.bvh ??= new TriangleBVH(this.shown.positions, this.shown.triangles);
     const { origin, dir } = this.ray(sx, sy);
     const hit = this.bvh.raycast(origin.x, origin.y, origin.z, dir.x, dir.y, dir.z);
     return hit ? { ...hit, point: origin.addScaledVector(dir, hit.t) } : null;
@@ -294,7 +314,8 @@ export class View3D {
    * the camera, up to `slack` (world units) in front of it.
    */
   isVisible(x: number, y: number, z: number, slack: number): boolean {
-    if (!this.bvh) return true;
+    if (!this.shown) return true;
+    this.bvh ??= new TriangleBVH(this.shown.positions, this.shown.triangles);
     const origin = this.camera.position;
     const dir = new Vector3(x, y, z).sub(origin);
     const length = dir.length();

@@ -26,4 +26,18 @@ struct MeshView2 {
   const int32_t* triangle(int t) const { return triangles + 3 * size_t(t); }
 };
 
+// A triangulated surface in 3D, the same way (vertices: #V by 3: x,y,z). The bounded biharmonic
+// weights of subdivision surfaces (skin3d/weights.h) run on it.
+struct MeshView3 {
+  const double* vertices = nullptr;    // #V by 3: x,y,z
+  int vertex_count = 0;                // #V
+  const int32_t* triangles = nullptr;  // #F by 3: vertex indices
+  int triangle_count = 0;              // #F
+
+  Vec3 position(int v) const {
+    return {vertices[3 * size_t(v)], vertices[3 * size_t(v) + 1], vertices[3 * size_t(v) + 2]};
+  }
+  const int32_t* triangle(int t) const { return triangles + 3 * size_t(t); }
+};
+
 }  // namespace splinekit::skin

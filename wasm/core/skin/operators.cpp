@@ -1,12 +1,21 @@
 #include "operators.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace splinekit::skin {
 
-void cotangent_laplacian(const MeshView2& m, Eigen::SparseMatrix<double>& L) {
+namespace {
+
+// |a × b|: twice the area of the triangle spanned by a and b, in 2D or 3D.
+double cross_norm(const Vec2& a, const Vec2& b) { return std::abs(cross(a, b)); }
+double cross_norm(const Vec3& a, const Vec3& b) { return a.cross(b).norm(); }
+
+template <class Mesh>
+void cotangent_laplacian_of(const Mesh& m, Eigen::SparseMatrix<double>& L) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(12 * size_t(m.triangle_count));
   for (int t = 0; t < m.triangle_count; ++t) {
@@ -14,8 +23,9 @@ void cotangent_laplacian(const MeshView2& m, Eigen::SparseMatrix<double>& L) {
     for (int k = 0; k < 3; ++k) {
       // Edge (i, j) and the angle at o opposite it: cot = (a·b) / |a×b| with a = i − o, b = j − o.
       const int o = f[k], i = f[(k + 1) % 3], j = f[(k + 2) % 3];
-      const Vec2 po = m.position(o), a = m.position(i) - po, b = m.position(j) - po;
-      const double w = 0.5 * a.dot(b) / std::abs(cross(a, b));
+      const auto po = m.position(o);
+      const auto a = (m.position(i) - po).eval(), b = (m.position(j) - po).eval();
+      const double w = 0.5 * a.dot(b) / cross_norm(a, b);
       entries.emplace_back(i, j, w);
       entries.emplace_back(j, i, w);
       entries.emplace_back(i, i, -w);
@@ -26,11 +36,13 @@ void cotangent_laplacian(const MeshView2& m, Eigen::SparseMatrix<double>& L) {
   L.setFromTriplets(entries.begin(), entries.end());
 }
 
-void mass_matrix(const MeshView2& m, MassType type, Eigen::SparseMatrix<double>& M) {
+template <class Mesh>
+void mass_matrix_of(const Mesh& m, MassType type, Eigen::SparseMatrix<double>& M) {
   Eigen::VectorXd area = Eigen::VectorXd::Zero(m.vertex_count);
   for (int t = 0; t < m.triangle_count; ++t) {
     const int32_t* f = m.triangle(t);
-    const double A = 0.5 * std::abs(orient(m.position(f[0]), m.position(f[1]), m.position(f[2])));
+    const double A =
+        0.5 * cross_norm((m.position(f[1]) - m.position(f[0])).eval(), (m.position(f[2]) - m.position(f[0])).eval());
     if (type == MassType::kBarycentric) {
       for (int k = 0; k < 3; ++k) area[f[k]] += A / 3;
       continue;
@@ -38,7 +50,7 @@ void mass_matrix(const MeshView2& m, MassType type, Eigen::SparseMatrix<double>&
     // Squared length of the edge opposite vertex k, and the cotangent of the angle at k.
     double len2[3], cot[3];
     for (int k = 0; k < 3; ++k) {
-      const Vec2 o = m.position(f[k]), p = m.position(f[(k + 1) % 3]), q = m.position(f[(k + 2) % 3]);
+      const auto o = m.position(f[k]), p = m.position(f[(k + 1) % 3]), q = m.position(f[(k + 2) % 3]);
       len2[k] = (q - p).squaredNorm();
       cot[k] = (p - o).dot(q - o) / (2 * A);
     }
@@ -59,6 +71,13 @@ void mass_matrix(const MeshView2& m, MassType type, Eigen::SparseMatrix<double>&
   for (int v = 0; v < m.vertex_count; ++v) M.insert(v, v) = area[v];
   M.makeCompressed();
 }
+
+}  // namespace
+
+void cotangent_laplacian(const MeshView2& m, Eigen::SparseMatrix<double>& L) { cotangent_laplacian_of(m, L); }
+void cotangent_laplacian_3d(const MeshView3& m, Eigen::SparseMatrix<double>& L) { cotangent_laplacian_of(m, L); }
+void mass_matrix(const MeshView2& m, MassType type, Eigen::SparseMatrix<double>& M) { mass_matrix_of(m, type, M); }
+void mass_matrix_3d(const MeshView3& m, MassType type, Eigen::SparseMatrix<double>& M) { mass_matrix_of(m, type, M); }
 
 void triangle_weight_gradients(const MeshView2& m, const double* W, int handle_count, double* G) {
   for (int t = 0; t < m.triangle_count; ++t) {

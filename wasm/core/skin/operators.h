@@ -17,6 +17,8 @@ namespace splinekit::skin {
 //   mesh  the domain (valid: see validate_weights_input)
 //   L     output, #V by #V
 void cotangent_laplacian(const MeshView2& mesh, Eigen::SparseMatrix<double>& L);
+// The same on a triangulated surface in 3D (angles and areas measured in 3D).
+void cotangent_laplacian_3d(const MeshView3& mesh, Eigen::SparseMatrix<double>& L);
 
 // Which lumped mass matrix. The numbers cross to TS (src/skin/weights.ts passes 0 or 1).
 enum class MassType : int {
@@ -29,6 +31,7 @@ enum class MassType : int {
 //   type  see MassType
 //   M     output, #V by #V diagonal
 void mass_matrix(const MeshView2& mesh, MassType type, Eigen::SparseMatrix<double>& M);
+void mass_matrix_3d(const MeshView3& mesh, MassType type, Eigen::SparseMatrix<double>& M);
 
 // Gradients of the piecewise-linear functions W (one per column), constant per triangle (for the
 // Jacobian baseline of the skinning rig).

@@ -7,24 +7,27 @@ namespace splinekit::skin {
 
 namespace {
 
-// The index of a handle that p coincides with (relative to the handle spread), or -1.
-double spread2(const double* handles, int h) {
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  for (int i = 0; i < h; ++i)
-    for (int a = 0; a < 2; ++a)
-      lo[a] = std::fmin(lo[a], handles[2 * i + a]), hi[a] = std::fmax(hi[a], handles[2 * i + a]);
-  const double s2 = (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]);
+// The squared diagonal of the handles' bounding box (1 when they coincide): the scale at which a
+// point counts as lying on a handle. dim: 2 or 3 coordinates per point.
+double spread2(const double* handles, int h, int dim) {
+  double s2 = 0;
+  for (int a = 0; a < dim; ++a) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < h; ++i) lo = std::fmin(lo, handles[dim * i + a]), hi = std::fmax(hi, handles[dim * i + a]);
+    s2 += (hi - lo) * (hi - lo);
+  }
   return s2 > 0 ? s2 : 1.0;
 }
 
-// Squared distances from (x, y) to every handle into d2; returns the index of a handle the point
-// coincides with (relative to the handle spread), or -1, and the smallest distance in dmin2.
-int distances(const double* handles, int h, double x, double y, double scale2, double* d2, double& dmin2) {
+// Squared distances from p (dim coordinates) to every handle into d2; returns the index of a
+// handle the point coincides with (relative to the handle spread), or -1, and the smallest
+// distance in dmin2.
+int distances(const double* handles, int h, const double* p, int dim, double scale2, double* d2, double& dmin2) {
   int at = -1;
   dmin2 = INFINITY;
   for (int i = 0; i < h; ++i) {
-    const double dx = x - handles[2 * i], dy = y - handles[2 * i + 1];
-    d2[i] = dx * dx + dy * dy;
+    d2[i] = 0;
+    for (int a = 0; a < dim; ++a) d2[i] += (p[a] - handles[dim * i + a]) * (p[a] - handles[dim * i + a]);
     dmin2 = std::fmin(dmin2, d2[i]);
     if (at < 0 && d2[i] <= 1e-24 * scale2) at = i;
   }
@@ -34,11 +37,15 @@ int distances(const double* handles, int h, double x, double y, double scale2, d
 }  // namespace
 
 void shepard_weights(const double* handles, int h, const double* points, int n, double power, double* out) {
+  shepard_weights_nd(handles, h, points, n, 2, power, out);
+}
+
+void shepard_weights_nd(const double* handles, int h, const double* points, int n, int dim, double power, double* out) {
   std::vector<double> d2(h);
-  const double scale2 = spread2(handles, h);
+  const double scale2 = spread2(handles, h, dim);
   for (int p = 0; p < n; ++p) {
     double dmin2;
-    const int at = distances(handles, h, points[2 * p], points[2 * p + 1], scale2, d2.data(), dmin2);
+    const int at = distances(handles, h, points + size_t(dim) * p, dim, scale2, d2.data(), dmin2);
     double* w = out + size_t(p) * h;
     if (at >= 0) {
       for (int i = 0; i < h; ++i) w[i] = i == at ? 1.0 : 0.0;
@@ -56,11 +63,11 @@ void shepard_weights(const double* handles, int h, const double* points, int n, 
 
 void shepard_gradients(const double* handles, int h, const double* points, int n, double power, double* out) {
   std::vector<double> d2(h), phi(h), gx(h), gy(h);
-  const double scale2 = spread2(handles, h);
+  const double scale2 = spread2(handles, h, 2);
   for (int p = 0; p < n; ++p) {
     const double x = points[2 * p], y = points[2 * p + 1];
     double dmin2;
-    const int at = distances(handles, h, x, y, scale2, d2.data(), dmin2);
+    const int at = distances(handles, h, points + 2 * size_t(p), 2, scale2, d2.data(), dmin2);
     double* g = out + size_t(p) * h * 2;
     if (at >= 0) {
       for (int i = 0; i < 2 * h; ++i) g[i] = 0.0;

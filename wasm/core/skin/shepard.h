@@ -12,6 +12,12 @@ namespace splinekit::skin {
 void shepard_weights(const double* handles, int handle_count, const double* points, int point_count, double power,
                      double* out);
 
+// The same weights for points and handles of `dim` coordinates each (handles: #H by dim, points:
+// #P by dim, out: #P by #H row-major); shepard_weights is dim = 2. The 3D skinning rig
+// (skin3d/rig.h) evaluates them at the refined surface's vertices.
+void shepard_weights_nd(const double* handles, int handle_count, const double* points, int point_count, int dim,
+                        double power, double* out);
+
 // Gradients ∇w_i at the points into out (#P by #H by 2, row-major: out[(p*H + i)*2 + axis]).
 // At a handle the gradient is taken as its limit for power > 1, which is zero.
 void shepard_gradients(const double* handles, int handle_count, const double* points, int point_count, double power,

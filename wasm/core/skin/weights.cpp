@@ -157,26 +157,43 @@ WeightsReport harmonic_weights(const MeshView2& mesh, const int32_t* handles, in
   return report;
 }
 
+namespace {
+
+std::string check_bbw_options(const BbwOptions& options) {
+  if (options.max_iterations < 1)
+    return "max iterations must be at least 1, got " + std::to_string(options.max_iterations);
+  if (!(options.bound_tolerance >= 0) || !std::isfinite(options.bound_tolerance))
+    return "bound tolerance must be finite and non-negative";
+  if (!(options.multiplier_tolerance >= 0) || !std::isfinite(options.multiplier_tolerance))
+    return "multiplier tolerance must be finite and non-negative";
+  return "";
+}
+
+}  // namespace
+
 WeightsReport bbw_weights(const MeshView2& mesh, const int32_t* handles, int handle_count, const BbwOptions& options,
                           double* W) {
   WeightsReport report;
-  if (options.max_iterations < 1)
-    report.error = "max iterations must be at least 1, got " + std::to_string(options.max_iterations);
-  else if (!(options.bound_tolerance >= 0) || !std::isfinite(options.bound_tolerance))
-    report.error = "bound tolerance must be finite and non-negative";
-  else if (!(options.multiplier_tolerance >= 0) || !std::isfinite(options.multiplier_tolerance))
-    report.error = "multiplier tolerance must be finite and non-negative";
-  else
-    report.error = validate_weights_input(mesh, handles, handle_count);
+  report.error = check_bbw_options(options);
+  if (report.ok()) report.error = validate_weights_input(mesh, handles, handle_count);
   if (!report.ok()) return report;
-
-  // Q = L M⁻¹ L, the discrete bilaplacian energy ∫ (Δw)² with natural boundary conditions.
-  SpMat L, M, Qff;
-  Eigen::MatrixXd Qfh;
+  SpMat L, M;
   cotangent_laplacian(mesh, L);
   mass_matrix(mesh, options.mass, M);
+  return bbw_weights_from_operators(L, M, handles, handle_count, options, W);
+}
+
+WeightsReport bbw_weights_from_operators(const SpMat& L, const SpMat& M, const int32_t* handles, int handle_count,
+                                         const BbwOptions& options, double* W) {
+  WeightsReport report;
+  report.error = check_bbw_options(options);
+  if (!report.ok()) return report;
+  // Q = L M⁻¹ L, the discrete bilaplacian energy ∫ (Δw)² with natural boundary conditions.
+  SpMat Qff;
+  Eigen::MatrixXd Qfh;
   const SpMat Q = L * (M.diagonal().cwiseInverse().asDiagonal() * L);
-  const Split s = split_vertices(mesh.vertex_count, handles, handle_count);
+  const int vertex_count = int(L.rows());
+  const Split s = split_vertices(vertex_count, handles, handle_count);
   split_matrix(Q, s, handle_count, Qff, Qfh);
   const int n = int(Qff.rows());
 
@@ -219,7 +236,7 @@ WeightsReport bbw_weights(const MeshView2& mesh, const int32_t* handles, int han
   for (int j = 0; j < handle_count; ++j) write_column(s, handle_count, j, X.col(j), W);
 
   if (options.partition_of_unity) {
-    for (int v = 0; v < mesh.vertex_count; ++v) {
+    for (int v = 0; v < vertex_count; ++v) {
       double* w = W + size_t(v) * handle_count;
       double sum = 0;
       for (int j = 0; j < handle_count; ++j) sum += w[j];

@@ -98,4 +98,12 @@ struct BbwOptions {
 WeightsReport bbw_weights(const MeshView2& mesh, const int32_t* handles, int handle_count, const BbwOptions& options,
                           double* W);
 
+// The same solver on any domain given its operators (the 3D rig's refined surface, skin3d/weights.h).
+// The caller has checked the handles (in range, distinct, one in every connected component).
+//   L  #V by #V cotangent Laplacian (cotangent_laplacian)
+//   M  #V by #V lumped mass, diagonal and positive (mass_matrix; options.mass is not read)
+WeightsReport bbw_weights_from_operators(const Eigen::SparseMatrix<double>& L, const Eigen::SparseMatrix<double>& M,
+                                         const int32_t* handles, int handle_count, const BbwOptions& options,
+                                         double* W);
+
 }  // namespace splinekit::skin

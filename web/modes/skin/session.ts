@@ -1,5 +1,5 @@
 import { IDENTITY_MATRIX, poseAt, type AffineMatrix, type SkinError, type SvgDocument, affine } from '../../../src/index.js';
-import { Emitter } from '../../app/events.js';
+import { KeyedSession, type KeyedSessionEvents } from './keyed-session.js';
 import type { InFlight } from '../../app/in-flight.js';
 import { buildRig, type BuiltRig } from './rig-build.js';
 import { rigKey, setPose, type SkinSpec, type WeightKind } from './spec.js';
@@ -23,16 +23,10 @@ export interface RigStatus {
   stale: boolean;
 }
 
-export interface SessionEvents extends Record<string, unknown> {
-  /** The spec changed (any edit, undo, restore); `live` while a gesture is under way. */
-  spec: { spec: SkinSpec; live: boolean };
+export interface SessionEvents extends KeyedSessionEvents<SkinSpec>, Record<string, unknown> {
   rig: RigStatus;
   /** New posed points (after a pose, a relax, or a new rig). */
   posed: { live: boolean };
-  /** The selected handle's id, or null. */
-  selection: number | null;
-  /** The playhead moved (seconds). */
-  time: number;
 }
 
 /** The continuity kinds of every junction, as a string to compare. */
@@ -52,11 +46,7 @@ export interface PoseErrors {
  * rig (Shepard at once, harmonic/BBW in the worker) while the previous rig keeps posing; every
  * pose change poses the rig and, unless a gesture is live, relaxes it when the spec is flexible.
  */
-export class SkinSession {
-  readonly events = new Emitter<SessionEvents>();
-  private _spec: SkinSpec;
-  private _time = 0;
-  private _selected: number | null = null;
+export class SkinSession extends KeyedSession<SkinSpec, SessionEvents> {
   private built: BuiltRig | null = null;
   private buildingKey: string | null = null;
   private failedKey: string | null = null;
@@ -78,20 +68,11 @@ export class SkinSession {
     private readonly work: InFlight,
     spec: SkinSpec,
   ) {
-    this._spec = spec;
+    super(spec);
     this.continuity = continuitySignature(doc);
     this._status = { phase: 'none', kind: spec.weights, stage: null, fraction: 0, message: null, curves: 0, ms: null, stale: false };
   }
 
-  get spec(): SkinSpec {
-    return this._spec;
-  }
-  get time(): number {
-    return this._time;
-  }
-  get selected(): number | null {
-    return this._selected;
-  }
   get status(): RigStatus {
     return this._status;
   }
@@ -103,50 +84,13 @@ export class SkinSession {
   get points(): Float64Array | null {
     return this._points;
   }
-  /** The next free handle id. */
-  get nextId(): number {
-    return this._spec.handles.reduce((m, h) => Math.max(m, h.id + 1), 0);
-  }
   /** Whether the rig in use matches the spec's handles and weights. */
   get ready(): boolean {
     return this._spec.handles.length === 0 ? this.built === null : this.built?.key === this.key() && this._points !== null;
   }
 
-  /** Index of a handle id in the spec, or -1. */
-  indexOf(id: number | null): number {
-    return id === null ? -1 : this._spec.handles.findIndex((h) => h.id === id);
-  }
-
-  /** Replaces the spec (an edit, an undo, a restore): rebuilds the rig if needed and poses. */
-  apply(spec: SkinSpec, options: { live?: boolean } = {}): void {
-    const live = options.live ?? false;
-    this._spec = spec;
-    if (this._time > spec.duration) this._time = spec.duration;
-    if (this._selected !== null && this.indexOf(this._selected) < 0) this.select(null);
-    this.ensureRig();
-    this.repose(live);
-    this.events.emit('spec', { spec, live });
-  }
-
-  /** Starts from a saved spec with the playhead at `time` (the saved pose wins over the animation). */
-  restore(spec: SkinSpec, time: number): void {
-    this._time = Math.min(spec.duration, Math.max(0, time));
-    this.apply(spec);
-    this.events.emit('time', this._time);
-  }
-
-  select(id: number | null): void {
-    if (id === this._selected) return;
-    this._selected = id;
-    this.events.emit('selection', id);
-  }
-
-  /** Moves the playhead; with keyframes, the pose follows the animation. */
-  setTime(time: number, options: { live?: boolean } = {}): void {
-    const t = Math.min(this._spec.duration, Math.max(0, time));
-    this._time = t;
-    this.events.emit('time', t);
-    if (this._spec.keyframes.length > 0) this.apply(setPose(this._spec, poseAt(this._spec.keyframes, t)), options);
+  protected posedAt(time: number): SkinSpec {
+    return setPose(this._spec, poseAt(this._spec.keyframes, time));
   }
 
   /** Poses again without a gesture (relaxes when flexible): after a live sequence ends. */
@@ -294,7 +238,7 @@ export class SkinSession {
     });
   }
 
-  private repose(live: boolean): void {
+  protected repose(live: boolean): void {
     const built = this.built;
     this.poseVersion++;
     if (!built) {
@@ -324,7 +268,7 @@ export class SkinSession {
     this.client.cancel();
   }
 
-  private ensureRig(): void {
+  protected ensureRig(): void {
     if (this.suspended) return;
     const spec = this._spec, key = this.key();
     if (spec.handles.length === 0) {

@@ -8,7 +8,7 @@ import { SpecCommand } from './commands.js';
 import { exportAnimated, exportPosed } from './export.js';
 import { poseFor, readout, type Gesture } from './gestures.js';
 import { SKIN_KEYS, keyAction, type SkinAction } from './keymap.js';
-import { Playback } from './playback.js';
+import { KeyframeControl } from './keyframe-control.js';
 import { nextPaint } from './rig-build.js';
 import { SkinSession, type RigStatus } from './session.js';
 import type { LayerFlags, LayerName, SkinTool } from './skin-panel.js';
@@ -16,12 +16,8 @@ import { SkinView, type SkinViewState } from './skin-view.js';
 import {
   EMPTY_SPEC,
   addHandle,
-  deleteKeyframe,
-  keyframeAt,
   moveHandle,
   removeHandle,
-  retimeKeyframe,
-  setKeyframe,
   setPose,
   type SkinSpec,
   type WeightKind,
@@ -69,9 +65,14 @@ export class SkinMode implements Mode {
   private layers = loadPrefs();
   private gesture: Gesture | null = null;
   private readout: string | null = null;
-  private readonly playback = new Playback((dt) => {
-    const s = this.session;
-    if (s) s.setTime((s.time + dt) % s.spec.duration, { live: true });
+  private readonly keyframes = new KeyframeControl<SkinSpec>({
+    session: () => this.session,
+    canKey: () => (this.session?.spec.handles.length ?? 0) > 0,
+    busy: () => this.gesture !== null,
+    execute: (label, after) => this.execute(label, after),
+    refresh: () => this.refreshTimeline(),
+    // Relaxes the pose playback stopped at (when flexible).
+    stopped: () => this.session?.settle(),
   });
   private frame = 0;
   private readonly autosave = new DebouncedSave(AUTOSAVE_MS, () => this.saveNow());
@@ -102,14 +103,7 @@ export class SkinMode implements Mode {
         exportPosed: () => this.exportPosed(),
         exportAnimated: () => void this.exportAnimated(),
       },
-      {
-        togglePlay: () => this.togglePlay(),
-        seek: (t, live) => this.seek(t, live),
-        addKeyframe: () => this.addKeyframe(),
-        deleteKeyframe: () => this.deleteKeyframe(),
-        moveKeyframe: (i, t) => this.moveKeyframe(i, t),
-        setDuration: (d) => this.setDuration(d),
-      },
+      this.keyframes.actions,
     );
     this.ui.panel.setLayers(this.layers);
     ctx.view.canvas.classList.add('skin-canvas');
@@ -131,7 +125,7 @@ export class SkinMode implements Mode {
 
   deactivate(): void {
     const ctx = this.ctx;
-    this.stopPlayback();
+    this.keyframes.stop();
     this.autosave.flush();
     this.detach();
     for (const off of this.off) off();
@@ -157,7 +151,7 @@ export class SkinMode implements Mode {
     if (!s || !ui) return false;
     const hit = ui.handles.pick(p.sx, p.sy);
     if (!hit) return false;
-    this.stopPlayback();
+    this.keyframes.stop();
     s.select(hit.id);
     const index = s.indexOf(hit.id);
     const h = s.spec.handles[index];
@@ -244,7 +238,7 @@ export class SkinMode implements Mode {
   private attach(current: LoadedDocument | null): void {
     if (current === this.current && this.session) return;
     const previous = this.session;
-    this.stopPlayback();
+    this.keyframes.stop();
     this.autosave.flush();
     this.detach();
     this.current = current;
@@ -355,21 +349,13 @@ export class SkinMode implements Mode {
         return true;
       }
       case 'play':
-        this.togglePlay();
-        return true;
       case 'add-key':
-        this.addKeyframe();
-        return true;
       case 'delete-key':
-        this.deleteKeyframe();
-        return true;
       case 'previous-key':
       case 'next-key':
-        this.jumpKeyframe(action === 'next-key' ? 1 : -1);
-        return true;
       case 'start':
       case 'end':
-        this.seek(action === 'start' ? 0 : (s?.spec.duration ?? 0), false);
+        this.keyframes.runKey(action);
         return true;
     }
   }
@@ -437,36 +423,6 @@ export class SkinMode implements Mode {
     this.edit(`Use ${WEIGHT_NAMES[kind]} weights`, (s) => (s.weights === kind ? s : { ...s, weights: kind }));
   }
 
-  private addKeyframe(): void {
-    const s = this.session;
-    if (!s || s.spec.handles.length === 0) return;
-    this.stopPlayback();
-    this.execute(keyframeAt(s.spec, s.time) < 0 ? 'Add keyframe' : 'Replace keyframe', setKeyframe(s.spec, s.time));
-  }
-
-  private deleteKeyframe(): void {
-    const s = this.session;
-    if (!s) return;
-    const i = keyframeAt(s.spec, s.time);
-    if (i >= 0) this.execute('Delete keyframe', deleteKeyframe(s.spec, i));
-  }
-
-  private moveKeyframe(index: number, time: number): void {
-    const s = this.session;
-    if (!s || !s.spec.keyframes[index]) return;
-    const after = retimeKeyframe(s.spec, index, time);
-    if (Math.abs(after.keyframes[index].time - s.spec.keyframes[index].time) < 1e-9) return this.refreshTimeline();
-    this.execute('Move keyframe', after);
-    s.setTime(after.keyframes[index].time);
-  }
-
-  private setDuration(seconds: number): void {
-    const last = this.session?.spec.keyframes.at(-1)?.time ?? 0;
-    const d = Math.max(seconds, last, 0.1);
-    this.edit('Set animation length', (s) => (Math.abs(s.duration - d) < 1e-9 ? s : { ...s, duration: d }));
-    this.refreshTimeline();
-  }
-
   // ---- tools, layers, time ---------------------------------------------------------------------
 
   private setTool(tool: SkinTool): void {
@@ -484,42 +440,6 @@ export class SkinMode implements Mode {
     this.requestDraw();
   }
 
-  private seek(time: number, live: boolean): void {
-    const s = this.session;
-    if (!s) return;
-    this.stopPlayback();
-    s.setTime(time, { live });
-    this.refreshTimeline();
-  }
-
-  private jumpKeyframe(direction: 1 | -1): void {
-    const s = this.session;
-    if (!s || s.spec.keyframes.length === 0) return;
-    const times = s.spec.keyframes.map((k) => k.time);
-    const next = direction > 0 ? times.find((t) => t > s.time + 1e-6) : [...times].reverse().find((t) => t < s.time - 1e-6);
-    if (next !== undefined) this.seek(next, false);
-  }
-
-  private togglePlay(): void {
-    if (this.playback.playing) this.stopPlayback();
-    else this.startPlayback();
-  }
-
-  private startPlayback(): void {
-    const s = this.session;
-    if (!s || s.spec.keyframes.length < 2 || this.playback.playing || this.gesture) return;
-    if (s.time >= s.spec.duration - 1e-6) s.setTime(0, { live: true });
-    this.playback.start();
-    this.refreshTimeline();
-  }
-
-  /** Stops playing and relaxes the pose it stopped at (when flexible). */
-  private stopPlayback(): void {
-    if (!this.playback.stop()) return;
-    this.session?.settle();
-    this.refreshTimeline();
-  }
-
   // ---- export ----------------------------------------------------------------------------------
 
   private exportPosed(): void {
@@ -535,7 +455,7 @@ export class SkinMode implements Mode {
   private async exportAnimated(): Promise<void> {
     const s = this.session, ctx = this.ctx, current = this.current;
     if (!s || !ctx || !current) return;
-    this.stopPlayback();
+    this.keyframes.stop();
     ctx.state.setBusy('Exporting the animation…');
     try {
       await nextPaint();
@@ -568,7 +488,7 @@ export class SkinMode implements Mode {
 
   /** What the view shows now. */
   private get viewState(): SkinViewState {
-    return { session: this.session, tool: this.tool, layers: this.layers, gesture: this.gesture, readout: this.readout, playing: this.playback.playing };
+    return { session: this.session, tool: this.tool, layers: this.layers, gesture: this.gesture, readout: this.readout, playing: this.keyframes.playing };
   }
 
   private draw(): void {

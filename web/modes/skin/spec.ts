@@ -1,4 +1,5 @@
 import { IDENTITY_MATRIX, type AffineMatrix, type Keyframe, affine } from '../../../src/index.js';
+import { appendHandlePoses, dropHandlePoses } from '../../app/keyframes.js';
 
 /**
  * What the user builds in skin mode, as an immutable value: handles at their rest positions, the
@@ -32,8 +33,7 @@ export interface SkinSpec {
 
 export const EMPTY_SPEC: SkinSpec = { handles: [], pose: [], keyframes: [], weights: 'shepard', flexible: true, duration: 2 };
 
-/** Keyframes closer than this (seconds) are the same keyframe. */
-export const TIME_EPSILON = 1e-3;
+export { TIME_EPSILON, deleteKeyframe, keyframeAt, retimeKeyframe, setKeyframe } from '../../app/keyframes.js';
 
 /** The handle nearest to (x, y) at rest, or -1. */
 function nearest(spec: SkinSpec, x: number, y: number): number {
@@ -51,27 +51,14 @@ function nearest(spec: SkinSpec, x: number, y: number): number {
  * drawing apart.
  */
 export function addHandle(spec: SkinSpec, id: number, x: number, y: number, follow = nearest(spec, x, y)): SkinSpec {
-  const copy = (list: readonly AffineMatrix[]) => [...list, follow < 0 ? IDENTITY_MATRIX : list[follow]];
-  return {
-    ...spec,
-    handles: [...spec.handles, { id, x, y }],
-    pose: copy(spec.pose),
-    keyframes: spec.keyframes.map((k) => ({ time: k.time, transforms: copy(k.transforms) })),
-  };
+  return { ...appendHandlePoses<AffineMatrix, SkinSpec>(spec, (list) => (follow < 0 ? IDENTITY_MATRIX : list[follow])), handles: [...spec.handles, { id, x, y }] };
 }
 
 export function removeHandle(spec: SkinSpec, id: number): SkinSpec {
   const i = spec.handles.findIndex((h) => h.id === id);
   if (i < 0) return spec;
-  const drop = <T>(list: readonly T[]) => list.filter((_, k) => k !== i);
-  const handles = drop(spec.handles);
-  return {
-    ...spec,
-    handles,
-    pose: drop(spec.pose),
-    // Keyframes of a rig with no handles mean nothing.
-    keyframes: handles.length === 0 ? [] : spec.keyframes.map((k) => ({ time: k.time, transforms: drop(k.transforms) })),
-  };
+  const handles = spec.handles.filter((_, k) => k !== i);
+  return { ...dropHandlePoses<AffineMatrix, SkinSpec>(spec, i, handles.length), handles };
 }
 
 /** Moves a handle's rest position (its pose matrix stays). */
@@ -81,32 +68,6 @@ export function moveHandle(spec: SkinSpec, id: number, x: number, y: number): Sk
 
 export function setPose(spec: SkinSpec, pose: readonly AffineMatrix[]): SkinSpec {
   return { ...spec, pose: [...pose] };
-}
-
-/** Stores the current pose as the keyframe at `time` (replacing one at the same time). */
-export function setKeyframe(spec: SkinSpec, time: number): SkinSpec {
-  const keyframes = spec.keyframes.filter((k) => Math.abs(k.time - time) > TIME_EPSILON);
-  keyframes.push({ time, transforms: [...spec.pose] });
-  keyframes.sort((a, b) => a.time - b.time);
-  return { ...spec, keyframes, duration: Math.max(spec.duration, time) };
-}
-
-/** The keyframe at `time` (within TIME_EPSILON), or -1. */
-export function keyframeAt(spec: SkinSpec, time: number): number {
-  return spec.keyframes.findIndex((k) => Math.abs(k.time - time) <= TIME_EPSILON);
-}
-
-export function deleteKeyframe(spec: SkinSpec, index: number): SkinSpec {
-  return { ...spec, keyframes: spec.keyframes.filter((_, i) => i !== index) };
-}
-
-/** Moves keyframe `index` to `time` (kept between its neighbours). */
-export function retimeKeyframe(spec: SkinSpec, index: number, time: number): SkinSpec {
-  const keyframes = [...spec.keyframes];
-  const lo = index > 0 ? keyframes[index - 1].time + TIME_EPSILON * 2 : 0;
-  const hi = index < keyframes.length - 1 ? keyframes[index + 1].time - TIME_EPSILON * 2 : Infinity;
-  keyframes[index] = { ...keyframes[index], time: Math.min(hi, Math.max(lo, time)) };
-  return { ...spec, keyframes, duration: Math.max(spec.duration, keyframes[index].time) };
 }
 
 /** Handles and weights: what the rig is built from (a change means a new precompute). */

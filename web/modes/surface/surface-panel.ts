@@ -1,5 +1,6 @@
 import type { MeshInfo } from '../../../src/index.js';
-import { h, noFocusOnClick } from '../../ui/dom.js';
+import { button, fileInput, segmented } from '../../ui/controls.js';
+import { h } from '../../ui/dom.js';
 import { facts, section } from '../../ui/panel.js';
 import { MESH_ACCEPT } from './mesh-files.js';
 import type { Scheme, Subdivision, SurfacePrefs } from './storage.js';
@@ -39,39 +40,6 @@ const TOOLS: [SurfaceTool, string, string][] = [
   ['rotate', 'Rotate', 'Drag around the spline to turn it on the surface (R)'],
   ['scale', 'Scale', 'Drag away from (toward) the spline to grow (shrink) it (S)'],
 ];
-
-function segmented<T extends string>(label: string, items: [T, string, string][], onPick: (v: T) => void): { el: HTMLElement; set(v: T): void } {
-  const el = h('div', { class: 'segmented', role: 'group', 'aria-label': label });
-  const buttons = new Map<T, HTMLButtonElement>();
-  for (const [value, text, title] of items) {
-    const b = noFocusOnClick(h('button', { type: 'button', title, 'aria-pressed': 'false', 'data-value': value }, text));
-    b.addEventListener('click', () => onPick(value));
-    buttons.set(value, b);
-    el.append(b);
-  }
-  return {
-    el,
-    set(v) {
-      for (const [k, b] of buttons) b.setAttribute('aria-pressed', String(k === v));
-    },
-  };
-}
-
-function button(text: string, title: string, onclick: () => void, cls = 'small', testid?: string): HTMLButtonElement {
-  const b = noFocusOnClick(h('button', { type: 'button', class: cls, title, 'data-testid': testid }, text));
-  b.addEventListener('click', onclick);
-  return b;
-}
-
-function fileInput(accept: string, testid: string, onFile: (f: File) => void): HTMLInputElement {
-  const input = h('input', { type: 'file', accept, hidden: true, 'data-testid': testid });
-  input.addEventListener('change', () => {
-    const f = input.files?.[0];
-    input.value = '';
-    if (f) onFile(f);
-  });
-  return input;
-}
 
 function formatBytes(n: number): string {
   return n < 1024 ? `${n} B` : n < 2 ** 20 ? `${(n / 1024).toFixed(0)} KB` : `${(n / 2 ** 20).toFixed(1)} MB`;
