@@ -4,7 +4,7 @@
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
 //
 // `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
-// editor-drag, fidelity, skin-weight-steps, edit) and replaces just their text in BENCHMARKS.md (and their entries in
+// editor-drag, fidelity, skin-weight-steps, edit, morph, surface-scale) and replaces just their text in BENCHMARKS.md (and their entries in
 // build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -19,6 +19,7 @@ import { fidelityFigures, fidelitySection } from './fidelity.mjs';
 import { morphBenchmarks, morphSection } from './morph.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
+import { surfaceScaleBenchmarks, surfaceScaleSection } from './surface-scale.mjs';
 import { time } from './stats.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
@@ -45,6 +46,7 @@ const sections = {
   edit: { key: 'edit', heading: '## Edit (', before: '## Memory and size', run: () => editBenchmarks(), markdown: editSection },
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
   morph: { key: 'morph', heading: '## Morph', before: '## Editor (Chromium)', run: () => morphBenchmarks(data), markdown: morphSection },
+  'surface-scale': { key: 'surface_scale', heading: '## Surface at scale', before: '## Morph', run: () => surfaceScaleBenchmarks(root, data, { log: console.log }), markdown: surfaceScaleSection },
 };
 
 /**
@@ -161,13 +163,14 @@ console.log(`edit: ${JSON.stringify(edit)}`);
 
 // ---- surface (b/Surf) -------------------------------------------------------------------------
 const surface = await surfaceBenchmarks(root, data, { log: console.log });
+const surfaceScale = await surfaceScaleBenchmarks(root, data, { log: console.log });
 
 // ---- morph (Sederberg & Greenwood) vs flubber ---------------------------------------------------
 const morph = morphBenchmarks(data);
 console.log(`morph: ${JSON.stringify(morph.speed)}`);
 
 // ---- report -----------------------------------------------------------------------------------
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, morph, editor_drag: drag, fidelity, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, editor, morph, editor_drag: drag, fidelity, edit, surface, surface_scale: surfaceScale, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -243,6 +246,7 @@ All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${
 
 ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })}
 ${surfaceSection(surface)}
+${surfaceScaleSection(surfaceScale, { date, machine })}
 ${morphSection(morph, { date, machine, load: load() })}
 ${editorSection(editor, { date, machine, load: editor.load })}
 ${dragSection(drag, { date, machine, load: drag.load })}

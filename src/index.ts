@@ -57,9 +57,11 @@ export { SkinWeights, type BbwOptions, type DomainWeightKind, type WeightMesh } 
 export { computeDomainWeights, domainWeights, outlineSamples, type DomainWeightsInput } from './skin/auto-weights.js';
 export { animatedSVG, interpolateMatrix, poseAt, type AnimationOptions, type Keyframe } from './skin/animation.js';
 export {
+  DEFAULT_LANDMARKS,
   SurfaceMesh,
   type GeodesicPath,
   type MeshInfo,
+  type SurfaceMeshOptions,
   type MeshPoint,
   type MeshPointLike,
 } from './surface/mesh.js';
@@ -81,6 +83,7 @@ export {
   traceBezier,
   type SurfaceSplineJSON,
   type TracedCurve,
+  type TraceCounters,
 } from './surface/spline.js';
 export { DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SURFACE_SCHEMES, type SurfaceScheme, type TraceOptions } from './surface/trace-options.js';
 export { mapSplines, type SvgMapOptions } from './surface/svg-map.js';

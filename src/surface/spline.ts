@@ -4,13 +4,16 @@
  * anchors keep their handles collinear, whole splines move, turn and scale about a mesh point).
  */
 import { SplinekitError, checkStatus } from '../core/errors.js';
-import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
+import type { SurfaceMeshHandle, SurfaceWorkCounters } from '../core/splinekit-core.mjs';
 import type { SurfaceMesh } from './mesh.js';
 import { meshHandles, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
 import type { MeshPoint, MeshPointLike } from './mesh-point.js';
 import { traceArgs, type TraceOptions } from './trace-options.js';
 
 export type { SurfaceScheme, TraceOptions } from './trace-options.js';
+
+/** The work counters of a traced curve (summed over its shortest paths). */
+export type TraceCounters = SurfaceWorkCounters & { searchedPaths: number; seededPaths: number };
 
 /** A curve traced on the mesh, as mesh points and as 3D positions. */
 export interface TracedCurve {
@@ -24,11 +27,13 @@ export interface TracedCurve {
 export function traceBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], options?: TraceOptions): TracedCurve & {
   /** Time the core spent tracing, in milliseconds (measured inside wasm). */
   ms: number;
+  /** What the curve cost: shortest paths searched and seeded, graph nodes expanded, strip faces, passes, flips. */
+  counters: TraceCounters;
 } {
   if (controls.length !== 4) throw new SplinekitError('invalid-input', `a cubic curve needs 4 control points (got ${controls.length})`);
   const handle = writeMeshPoints(mesh, controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
   checkStatus(handle.trace(1, ...traceArgs(options)), 'trace', () => handle.error());
-  return { points: readMeshPoints(mesh), xyz: handle.xyzOut().slice(), ms: handle.curveMilliseconds(0) };
+  return { points: readMeshPoints(mesh), xyz: handle.xyzOut().slice(), ms: handle.curveMilliseconds(0), counters: handle.curveCounters(0) as TraceCounters };
 }
 
 /** The point at parameter t of a cubic curve on the mesh (§4.1.2, §4.2.2). */
