@@ -125,12 +125,12 @@ function exactDistances(root, file, pairs) {
 const sum = (xs) => xs.reduce((a, b) => a + b, 0);
 
 /**
- * options: curves (random whole-surface and 3%-disc polygons traced with landmarks, default 200),
- * baseline (how many of them also without landmarks, 30), sources × targets of the shortest paths
- * (2 × 20), log.
+ * options: curves (random whole-surface and 3%-disc polygons traced with landmarks, default 100),
+ * baseline (how many of them also without landmarks, 20), sources × targets of the shortest paths
+ * (2 × 10), log.
  */
 export async function surfaceScaleBenchmarks(root, data, options = {}) {
-  const { curves = 200, baseline = 30, sources = 2, targets = 20, meshes = SCALE_MESHES, log = () => {} } = options;
+  const { curves = 100, baseline = 20, sources = 2, targets = 10, meshes = SCALE_MESHES, log = () => {} } = options;
   const load_before = os.loadavg()[0];
   const t_start = performance.now();
   const rows = [];

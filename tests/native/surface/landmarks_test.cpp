@@ -145,13 +145,16 @@ TEST(Landmarks, TheSearchFollowsThePathNotTheMesh) {
 }
 
 TEST(Landmarks, ShortestPathsStayAsShortAsWithoutLandmarks) {
-  // The refined search with the scaled landmark term against the Euclidean one and the exact
-  // distance (MMP): no path shorter than exact, as short as before, and the work far smaller.
+  // The refined search with the scaled landmark term (opted into: refined_landmark_scale) against
+  // the Euclidean one and the exact distance (MMP): no path shorter than exact, on this coil as short
+  // as before, and less work. With the default scale (0) the refined search is the Euclidean one.
   const TriMesh& mesh = small_coil();
-  ShortestPathOptions with, without;
-  with.landmark_min_faces = 0;
+  ShortestPathOptions with, without, by_default;
+  with.landmark_min_faces = by_default.landmark_min_faces = 0;
+  with.refined_landmark_scale = 0.85;
   without.landmarks = 0;
-  GeodesicSolver a(mesh, with), b(mesh, without);
+  GeodesicSolver a(mesh, with), b(mesh, without), c(mesh, by_default);
+  ASSERT_EQ(c.landmarks().count(), 8);
   std::vector<double> P;
   for (const Vec3& x : mesh.positions) P.insert(P.end(), {x.x(), x.y(), x.z()});
   std::vector<int> T;
@@ -172,6 +175,10 @@ TEST(Landmarks, ShortestPathsStayAsShortAsWithoutLandmarks) {
       ASSERT_TRUE(a.shortest_path(vertex_point(mesh, src), vertex_point(mesh, dst), pa, &sa));
       ASSERT_TRUE(b.shortest_path(vertex_point(mesh, src), vertex_point(mesh, dst), pb, &sb));
       const double la = path_length(mesh, pa), lb = path_length(mesh, pb);
+      GeodesicPath pc;
+      PathStats sc;
+      ASSERT_TRUE(c.shortest_path(vertex_point(mesh, src), vertex_point(mesh, dst), pc, &sc));
+      EXPECT_EQ(pc.strip, pb.strip);
       EXPECT_GE(la, d[dst] * (1 - 1e-9));
       EXPECT_LE(la, lb * 1.005) << src << " -> " << dst;
       ++paths;

@@ -23,12 +23,15 @@ struct ShortestPathOptions {
   double dual_heuristic_weight = 3;  // weight of the A* Euclidean term in the kDual search
   // Landmark lower bounds (landmarks.h) on meshes of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
-  // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one (where
-  // dual-graph distances overestimate the refined graph's, so the bound is scaled down).
-  int landmarks = 8;                     // landmarks per mesh (2 bytes per face each); 0: none
-  int landmark_min_faces = 16384;        // smaller meshes search fast enough on the Euclidean term
-  double landmark_weight = 3;            // kDual (as dual_heuristic_weight: a greedy search)
-  double refined_landmark_scale = 0.85;  // kRefined
+  // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
+  // dual-graph distances overestimate the refined graph's (by up to a third on the coil of the
+  // benchmarks), so no scale is both admissible and useful: 0 (the default) leaves the refined search
+  // exact; 0.85 makes it ~40 times cheaper on that coil but only 90% of nefertiti's paths stay within
+  // 0.5% of the exact distance (BENCHMARKS.md, "Surface at scale").
+  int landmarks = 8;                  // landmarks per mesh (2 bytes per face each); 0: none
+  int landmark_min_faces = 16384;     // smaller meshes search fast enough on the Euclidean term
+  double landmark_weight = 3;         // kDual (as dual_heuristic_weight: a greedy search)
+  double refined_landmark_scale = 0;  // kRefined
 };
 
 // Counters for tests and benchmarks, summed over the calls they are passed to.
