@@ -60,6 +60,7 @@ export {
   DEFAULT_LANDMARKS,
   SurfaceMesh,
   type GeodesicPath,
+  type MeshBuildTimes,
   type MeshInfo,
   type SurfaceMeshOptions,
   type MeshPoint,

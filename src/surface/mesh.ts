@@ -42,10 +42,18 @@ export interface MeshInfo {
   bytes: number;
   /** Landmarks of the shortest-path search (see SurfaceMeshOptions.landmarks; 0 below 16,384 faces). */
   landmarks: number;
-  /** Milliseconds the core spent building the mesh (welding, orientation, adjacency) and its search structures (graph, landmarks). */
-  buildMs: { mesh: number; search: number };
+  /** Milliseconds the core spent building the mesh and its search structures. */
+  buildMs: MeshBuildTimes;
   /** One line per repair or oddity, e.g. "welded 57,653 vertices that share a position". */
   warnings: string[];
+}
+
+/** Milliseconds the core spent building a mesh (MeshInfo.buildMs). */
+export interface MeshBuildTimes {
+  /** Welding, orientation, adjacency, locality order. */
+  mesh: number;
+  /** The shortest-path search's graph and landmarks. */
+  search: number;
 }
 
 /** Options of SurfaceMesh.fromArrays and SurfaceMesh.load. */
@@ -59,6 +67,7 @@ export interface SurfaceMeshOptions {
   landmarks?: number;
 }
 
+/** Landmarks of a SurfaceMesh when SurfaceMeshOptions.landmarks is not given. */
 export const DEFAULT_LANDMARKS = 8;
 
 /** A geodesic path on the mesh: its start, every edge crossing, its end. */

@@ -4,7 +4,7 @@
  * anchors keep their handles collinear, whole splines move, turn and scale about a mesh point).
  */
 import { SplinekitError, checkStatus } from '../core/errors.js';
-import type { SurfaceMeshHandle, SurfaceWorkCounters } from '../core/splinekit-core.mjs';
+import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
 import type { SurfaceMesh } from './mesh.js';
 import { meshHandles, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
 import type { MeshPoint, MeshPointLike } from './mesh-point.js';
@@ -12,8 +12,25 @@ import { traceArgs, type TraceOptions } from './trace-options.js';
 
 export type { SurfaceScheme, TraceOptions } from './trace-options.js';
 
-/** The work counters of a traced curve (summed over its shortest paths). */
-export type TraceCounters = SurfaceWorkCounters & { searchedPaths: number; seededPaths: number };
+/** The work counters of a traced curve (summed over its shortest paths): what the curve cost. */
+export interface TraceCounters {
+  /** Shortest paths found by a search on the mesh's graph. */
+  searchedPaths: number;
+  /** Shortest paths straightened through known paths instead (no search). */
+  seededPaths: number;
+  /** Searches run (phase (i)). */
+  searches: number;
+  /** Graph nodes the searches expanded. */
+  visitedNodes: number;
+  /** Faces of the strips laid out and straightened. */
+  stripFaces: number;
+  /** Straightening passes. */
+  passes: number;
+  /** Flips kept because they shortened a path. */
+  flips: number;
+  /** Vertices found locally shortest (or not flippable) and frozen. */
+  frozenVertices: number;
+}
 
 /** A curve traced on the mesh, as mesh points and as 3D positions. */
 export interface TracedCurve {
