@@ -4,7 +4,7 @@
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
 //
 // `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
-// editor-drag, fidelity, skin-weight-steps, edit, morph, skin3d) and replaces just their text in BENCHMARKS.md (and their entries in
+// editor-drag, fidelity, skin-weight-steps, edit, morph, skin3d, surface-scale) and replaces just their text in BENCHMARKS.md (and their entries in
 // build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -20,6 +20,7 @@ import { morphBenchmarks, morphSection } from './morph.mjs';
 import { skinAccuracy, skinSpeed, skinWeightSteps, skinWeightStepsSection, skinWeightsSpeed } from './skin.mjs';
 import { skin3dBenchmarks, skin3dSection } from './skin3d.mjs';
 import { surfaceBenchmarks, surfaceSection } from './surface.mjs';
+import { surfaceScaleBenchmarks, surfaceScaleSection } from './surface-scale.mjs';
 import { time } from './stats.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
@@ -47,6 +48,7 @@ const sections = {
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
   morph: { key: 'morph', heading: '## Morph', before: '## Editor (Chromium)', run: () => morphBenchmarks(data), markdown: morphSection },
   skin3d: { key: 'skin3d', heading: '## Skin 3D', before: '## Surface', run: () => skin3dBenchmarks(data), markdown: skin3dSection },
+  'surface-scale': { key: 'surface_scale', heading: '## Surface at scale', before: '## Morph', run: () => surfaceScaleBenchmarks(root, data, { log: console.log }), markdown: surfaceScaleSection },
 };
 
 /**
@@ -167,13 +169,14 @@ console.log(`edit: ${JSON.stringify(edit)}`);
 
 // ---- surface (b/Surf) -------------------------------------------------------------------------
 const surface = await surfaceBenchmarks(root, data, { log: console.log });
+const surfaceScale = await surfaceScaleBenchmarks(root, data, { log: console.log });
 
 // ---- morph (Sederberg & Greenwood) vs flubber ---------------------------------------------------
 const morph = morphBenchmarks(data);
 console.log(`morph: ${JSON.stringify(morph.speed)}`);
 
 // ---- report -----------------------------------------------------------------------------------
-const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, skin3d, editor, morph, editor_drag: drag, fidelity, edit, surface, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
+const results = { date, machine, svg: rows, skin: { speed: skin, accuracy, weights: weightsSpeed }, skin_weight_steps: weightSteps, skin3d, editor, morph, editor_drag: drag, fidelity, edit, surface, surface_scale: surfaceScale, kernels: { file: bigRel, splines: big.splines.length, segments: big.stats().segments, wasm, native }, memory: { leak_bytes_after_20_parses: leak }, size };
 writeFileSync(join(root, 'build/bench/results.json'), `${JSON.stringify(results, null, 2)}\n`);
 
 const f = (x, d = 2) => x.toFixed(d);
@@ -250,6 +253,7 @@ All control points / fit: **${f(meanRatio, 1)}×** on average (geometric mean ${
 ${skinWeightStepsSection(weightSteps, { date, machine, load: weightSteps.load })}
 ${skin3dSection(skin3d, { date, machine, load: skin3d.load })}
 ${surfaceSection(surface)}
+${surfaceScaleSection(surfaceScale, { date, machine })}
 ${morphSection(morph, { date, machine, load: load() })}
 ${editorSection(editor, { date, machine, load: editor.load })}
 ${dragSection(drag, { date, machine, load: drag.load })}

@@ -452,6 +452,17 @@ was set; the header says what each option does).
   searches that must go round a concave region (spot_loop2_369k, random face pairs: p90 23k nodes
   visited at 2, 2.7k at 3, 1.2k at 4); phase (iii)'s chords make up for the rougher strips (curves on
   average 0.3% longer on nefertiti, 0.2% shorter on spot_loop2_369k; 4 makes nefertiti's 1% longer).
+  (Measured with the label-correcting SLF/LLL search of before 2026-12-02; the search is now a heap
+  A*, see "Surface at scale".)
+- **landmarks = 8, landmark_weight = 3, refined_landmark_scale = 0, landmark_min_faces = 16384**
+  (phase (i)'s landmark term, 2026-12-02, section "Surface at scale"). 8 landmarks take 16 bytes per
+  triangle, what giving search records per edge rather than per node saved (18). Random whole-surface
+  curves on the 384k-triangle coil (native, 10, loaded machine) took 356 ms at landmark_weight 1, 142
+  at 2, 97 at 3 and 340 at 5. The refined search (shortest paths) does not use them by default:
+  dual-graph distances overestimate the refined graph's by up to a third on the coil, and a scale that
+  makes the search cheap there is not admissible elsewhere (0.85: the coil's refined searches expand
+  23k nodes instead of 1.2M, but 90% of nefertiti's paths within 0.5% of exact instead of 100%; 0.5
+  to 0.7 keep nefertiti's lengths but expand 0.8-1.2M nodes on the coil again).
 - **chord_min_turn = 0.01 rad** (phase (iii)). Late in the straightening the path bends a little at
   apices far apart, and a chord there walks all the way between the neighbouring apices for a small
   gain; smaller bends get the semi-star (and zipper) flip. On random whole-surface curves (OLR, 5

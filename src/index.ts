@@ -67,9 +67,12 @@ export {
   type WeightSpec,
 } from './skin3d/rig.js';
 export {
+  DEFAULT_LANDMARKS,
   SurfaceMesh,
   type GeodesicPath,
+  type MeshBuildTimes,
   type MeshInfo,
+  type SurfaceMeshOptions,
   type MeshPoint,
   type MeshPointLike,
 } from './surface/mesh.js';
@@ -91,6 +94,7 @@ export {
   traceBezier,
   type SurfaceSplineJSON,
   type TracedCurve,
+  type TraceCounters,
 } from './surface/spline.js';
 export { DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SURFACE_SCHEMES, type SurfaceScheme, type TraceOptions } from './surface/trace-options.js';
 export { mapSplines, type SvgMapOptions } from './surface/svg-map.js';

@@ -35,8 +35,10 @@ const geodesicUsage = `usage: splinekit geodesic <mesh> --pairs <pairs.json> [--
 Locally shortest geodesic paths between pairs of mesh points (b/Surf §5.1). pairs.json:
 {"pairs":[[a,b],...]} where a point is a vertex index or {"face":f,"uv":[u,v]} (the point
 (1-u-v)·p0 + u·p1 + v·p2 of the face's vertices), indices in the file's order. --json writes
-{"paths":[{"length":L,"points":[[x,y,z],...]}],"stats":{"total_ms":..}}; total_ms covers the path
-computations only.`;
+{"paths":[{"length":L,"points":[[x,y,z],...]}],"stats":{"total_ms":..,"per_path":[{"ms":..,
+"visitedNodes":..,"stripFaces":..,"passes":..,"flips":..},...]}}; total_ms covers the path
+computations only; per_path gives each path's time and work (graph nodes the search expanded, faces
+of the strip straightened, straightening passes, flips kept).`;
 
 export const geodesic: Command = {
   summary: 'shortest paths between points on a mesh',
@@ -54,14 +56,18 @@ export const geodesic: Command = {
         return [meshPoint(mesh, pair[0], `pair ${i} start`), meshPoint(mesh, pair[1], `pair ${i} end`)] as const;
       });
       let total = 0;
+      const perPath: Record<string, number>[] = [];
       const paths = pairs.map(([a, b]) => {
         const path = mesh.shortestPath(a, b);
-        total += meshHandles.get(mesh).milliseconds();
+        const handle = meshHandles.get(mesh);
+        total += handle.milliseconds();
+        const { visitedNodes, stripFaces, passes, flips } = handle.pathCounters();
+        perPath.push({ ms: round(handle.milliseconds()), visitedNodes, stripFaces, passes, flips });
         const points: number[][] = [];
         for (let i = 0; i < path.xyz.length; i += 3) points.push([path.xyz[i], path.xyz[i + 1], path.xyz[i + 2]]);
         return { length: path.length, points };
       });
-      if (values.json) writeJSON(values.json, { paths, stats: { total_ms: round(total) } });
+      if (values.json) writeJSON(values.json, { paths, stats: { total_ms: round(total), per_path: perPath } });
       else {
         paths.forEach((p, i) => console.log(`pair ${i}: length ${p.length.toPrecision(8)}, ${p.points.length} points`));
         console.log(`${paths.length} paths in ${round(total)} ms`);
@@ -80,7 +86,10 @@ or RDC (${DEFAULT_TRACE_LEVELS.rdc} levels), uniform or adaptive with an angle t
 {"curves":[[p0,p1,p2,p3],...]} with points as in \`splinekit geodesic\`; --random N draws N
 curves with control points uniform over the surface's area (seed S, default 1). --json writes
 {"curves":[{"points":[{"face":f,"uv":[u,v],"xyz":[x,y,z]},...]}],"stats":{"total_ms":..,
-"per_curve_ms":[...]}}: the whole polyline on the surface, every edge crossing included.`;
+"per_curve_ms":[...],"per_curve":[{"searchedPaths":..,"seededPaths":..,"visitedNodes":..,
+"stripFaces":..,"passes":..,"flips":..},...]}}: the whole polyline on the surface, every edge crossing
+included; per_curve is each curve's work (shortest paths searched and straightened through known
+ones, graph nodes expanded, strip faces straightened, passes, flips).`;
 
 function integerOption(value: string | undefined, name: string, min: number, max: number): number | undefined {
   if (value === undefined) return undefined;
@@ -138,15 +147,18 @@ export const trace: Command = {
         polygons = Array.from({ length: count! }, (_, i) => points.slice(4 * i, 4 * i + 4));
       }
       const perCurve: number[] = [];
+      const work: Record<string, number>[] = [];
       const curves = polygons.map((polygon) => {
         const traced = traceBezier(mesh, polygon, options);
         perCurve.push(traced.ms);
+        const { searchedPaths, seededPaths, visitedNodes, stripFaces, passes, flips } = traced.counters;
+        work.push({ searchedPaths, seededPaths, visitedNodes, stripFaces, passes, flips });
         return {
           points: traced.points.map((p, i) => ({ face: p.face, uv: p.uv, xyz: [traced.xyz[3 * i], traced.xyz[3 * i + 1], traced.xyz[3 * i + 2]] })),
         };
       });
       const total = perCurve.reduce((a, b) => a + b, 0);
-      if (values.json) writeJSON(values.json, { curves, stats: { total_ms: round(total), per_curve_ms: perCurve.map(round) } });
+      if (values.json) writeJSON(values.json, { curves, stats: { total_ms: round(total), per_curve_ms: perCurve.map(round), per_curve: work } });
       else {
         const sorted = [...perCurve].sort((a, b) => a - b);
         console.log(

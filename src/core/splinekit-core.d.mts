@@ -107,16 +107,30 @@ export interface Skin3dRigHandle extends EmbindObject {
   errorMessage(): string;
 }
 
+/** What a shortest path or a traced curve cost: phase (i) searches and expanded graph nodes, phase (ii) strip faces, phase (iii) passes, kept flips and frozen vertices. */
+export interface SurfaceWorkCounters {
+  searches: number;
+  visitedNodes: number;
+  stripFaces: number;
+  passes: number;
+  flips: number;
+  frozenVertices: number;
+}
+
 /** wasm/bindings/surface_bindings.cpp — SurfaceMeshHandle (see the flow comment there). */
 export interface SurfaceMeshHandle extends EmbindObject {
   resizeMesh(vertices: number, faces: number): void;
   positionsIn(): Float64Array;
   trianglesIn(): Int32Array;
-  build(): number;
+  build(landmarks: number): number;
   /** The mesh report, {name: count} under the names of wasm/core/surface/mesh.h report_fields. */
   reportFields(): Record<string, number>;
   bytes(): number;
   scale(): number;
+  /** Landmarks of the solver (0 below its minimum mesh size). */
+  landmarkCount(): number;
+  /** Milliseconds of the last build(): part 0 the mesh, 1 its solver (search graph, landmarks). */
+  buildMilliseconds(part: number): number;
   resizePoints(n: number): void;
   pointsIn(): Float64Array;
   resizeXY(n: number): void;
@@ -127,6 +141,10 @@ export interface SurfaceMeshHandle extends EmbindObject {
   length(): number;
   milliseconds(): number;
   curveMilliseconds(curve: number): number;
+  /** Work counters of curve `curve` of the last trace() (an empty object for another index). */
+  curveCounters(curve: number): SurfaceWorkCounters & { searchedPaths?: number; seededPaths?: number };
+  /** Work counters of the last shortestPath(). */
+  pathCounters(): SurfaceWorkCounters;
   error(): string;
   shortestPath(): number;
   pathAt(t0: number, t1: number): number;

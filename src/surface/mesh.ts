@@ -38,11 +38,37 @@ export interface MeshInfo {
   boundaryLoops: number;
   /** Connected parts (a face with a repeated vertex is a part of its own). */
   components: number;
-  /** Bytes of wasm memory the mesh structures hold (positions, faces, adjacency, search graph). */
+  /** Bytes of wasm memory the mesh structures hold (positions, faces, adjacency, search graph, landmark distances). */
   bytes: number;
+  /** Landmarks of the shortest-path search (see SurfaceMeshOptions.landmarks; 0 below 16,384 faces). */
+  landmarks: number;
+  /** Milliseconds the core spent building the mesh and its search structures. */
+  buildMs: MeshBuildTimes;
   /** One line per repair or oddity, e.g. "welded 57,653 vertices that share a position". */
   warnings: string[];
 }
+
+/** Milliseconds the core spent building a mesh (MeshInfo.buildMs). */
+export interface MeshBuildTimes {
+  /** Welding, orientation, adjacency, locality order. */
+  mesh: number;
+  /** The shortest-path search's graph and landmarks. */
+  search: number;
+}
+
+/** Options of SurfaceMesh.fromArrays and SurfaceMesh.load. */
+export interface SurfaceMeshOptions {
+  /**
+   * Landmark faces whose distances (2 bytes per face each) bound the shortest-path search from below
+   * along the surface, so that searches on coiled or folded shapes follow the path instead of
+   * flooding the mesh; used on meshes of 16,384 faces or more. Default 8; 0 saves the memory and the
+   * precompute (about one dual-graph Dijkstra search per landmark).
+   */
+  landmarks?: number;
+}
+
+/** Landmarks of a SurfaceMesh when SurfaceMeshOptions.landmarks is not given. */
+export const DEFAULT_LANDMARKS = 8;
 
 /** A geodesic path on the mesh: its start, every edge crossing, its end. */
 export interface GeodesicPath {
@@ -126,6 +152,8 @@ export class SurfaceMesh {
       boundaryLoops: r.boundary_loops,
       components: r.components,
       bytes: handle.bytes(),
+      landmarks: handle.landmarkCount(),
+      buildMs: { mesh: handle.buildMilliseconds(0), search: handle.buildMilliseconds(1) },
       warnings: [],
     };
     const w = info.warnings;
@@ -141,7 +169,9 @@ export class SurfaceMesh {
   }
 
   /** A mesh from flat arrays (3 numbers per vertex, 3 vertex indices per triangle). */
-  static fromArrays(positions: ArrayLike<number>, triangles: ArrayLike<number>): SurfaceMesh {
+  static fromArrays(positions: ArrayLike<number>, triangles: ArrayLike<number>, options: SurfaceMeshOptions = {}): SurfaceMesh {
+    const landmarks = options.landmarks ?? DEFAULT_LANDMARKS;
+    if (!Number.isInteger(landmarks) || landmarks < 0 || landmarks > 64) throw new SplinekitError('invalid-input', `landmarks must be an integer from 0 to 64 (got ${landmarks})`);
     if (positions.length % 3 !== 0) throw new SplinekitError('invalid-input', `positions: ${positions.length} numbers is not a multiple of 3`);
     if (triangles.length % 3 !== 0) throw new SplinekitError('invalid-input', `triangles: ${triangles.length} indices is not a multiple of 3`);
     const m = core();
@@ -155,7 +185,7 @@ export class SurfaceMesh {
         if (!Number.isInteger(v)) throw new SplinekitError('invalid-input', `triangle ${Math.floor(i / 3)} has a vertex index that is not an integer (${v})`);
         t[i] = v;
       }
-      checkStatus(handle.build(), 'invalid mesh', () => handle.error());
+      checkStatus(handle.build(landmarks), 'invalid mesh', () => handle.error());
     } catch (err) {
       handle.delete();
       throw err;
@@ -164,10 +194,10 @@ export class SurfaceMesh {
   }
 
   /** Parses a mesh file (OBJ, OFF, PLY, STL, glTF, GLB) and builds it. */
-  static async load(data: ArrayBuffer | Uint8Array | string, fileName: string, options?: MeshParseOptions): Promise<SurfaceMesh> {
+  static async load(data: ArrayBuffer | Uint8Array | string, fileName: string, options?: MeshParseOptions & SurfaceMeshOptions): Promise<SurfaceMesh> {
     const arrays = await parseMesh(data, fileName, options);
     try {
-      return SurfaceMesh.fromArrays(arrays.positions, arrays.triangles);
+      return SurfaceMesh.fromArrays(arrays.positions, arrays.triangles, options);
     } catch (err) {
       if (err instanceof SplinekitError) throw new SplinekitError(err.code, `${fileName}: ${err.message}`, { cause: err });
       throw err;

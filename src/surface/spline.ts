@@ -12,6 +12,26 @@ import { traceArgs, type TraceOptions } from './trace-options.js';
 
 export type { SurfaceScheme, TraceOptions } from './trace-options.js';
 
+/** The work counters of a traced curve (summed over its shortest paths): what the curve cost. */
+export interface TraceCounters {
+  /** Shortest paths found by a search on the mesh's graph. */
+  searchedPaths: number;
+  /** Shortest paths straightened through known paths instead (no search). */
+  seededPaths: number;
+  /** Searches run (phase (i)). */
+  searches: number;
+  /** Graph nodes the searches expanded. */
+  visitedNodes: number;
+  /** Faces of the strips laid out and straightened. */
+  stripFaces: number;
+  /** Straightening passes. */
+  passes: number;
+  /** Flips kept because they shortened a path. */
+  flips: number;
+  /** Vertices found locally shortest (or not flippable) and frozen. */
+  frozenVertices: number;
+}
+
 /** A curve traced on the mesh, as mesh points and as 3D positions. */
 export interface TracedCurve {
   /** The polyline on the surface: P0, every point and edge crossing, P3. */
@@ -24,11 +44,13 @@ export interface TracedCurve {
 export function traceBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], options?: TraceOptions): TracedCurve & {
   /** Time the core spent tracing, in milliseconds (measured inside wasm). */
   ms: number;
+  /** What the curve cost: shortest paths searched and seeded, graph nodes expanded, strip faces, passes, flips. */
+  counters: TraceCounters;
 } {
   if (controls.length !== 4) throw new SplinekitError('invalid-input', `a cubic curve needs 4 control points (got ${controls.length})`);
   const handle = writeMeshPoints(mesh, controls.map((p, i) => mesh.resolve(p, `control point ${i}`)));
   checkStatus(handle.trace(1, ...traceArgs(options)), 'trace', () => handle.error());
-  return { points: readMeshPoints(mesh), xyz: handle.xyzOut().slice(), ms: handle.curveMilliseconds(0) };
+  return { points: readMeshPoints(mesh), xyz: handle.xyzOut().slice(), ms: handle.curveMilliseconds(0), counters: handle.curveCounters(0) as TraceCounters };
 }
 
 /** The point at parameter t of a cubic curve on the mesh (§4.1.2, §4.2.2). */

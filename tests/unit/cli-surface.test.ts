@@ -268,11 +268,11 @@ function sharedMesh(file: string): Mesh {
 
 interface GeodesicJSON {
   paths: { length: number; points: Vec3[] }[];
-  stats: { total_ms: number };
+  stats: { total_ms: number; per_path: { ms: number; visitedNodes: number; stripFaces: number; passes: number; flips: number }[] };
 }
 interface TraceJSON {
   curves: { points: { face: number; uv: [number, number]; xyz: Vec3 }[] }[];
-  stats: { total_ms: number; per_curve_ms: number[] };
+  stats: { total_ms: number; per_curve_ms: number[]; per_curve: { searchedPaths: number; seededPaths: number; visitedNodes: number; stripFaces: number; passes: number; flips: number }[] };
 }
 
 let runs = 0;
@@ -350,6 +350,17 @@ describe('splinekit geodesic', () => {
     const json = geodesic(plane.file, pairs);
     expect(json.paths).toHaveLength(pairs.length);
     expectReportedMs(json.stats.total_ms, 'total_ms of six paths');
+    // Work per path: within one face nothing is searched or straightened; across the plane the search
+    // expands nodes and the strip holds every face the straight segment crosses (at least those its
+    // edge crossings name), in one pass that finds nothing to flip.
+    expect(json.stats.per_path).toHaveLength(pairs.length);
+    expect(json.stats.per_path[5]).toMatchObject({ visitedNodes: 0, stripFaces: 1, passes: 0, flips: 0 });
+    for (const i of [0, 1, 2, 3]) {
+      const w = json.stats.per_path[i];
+      expect(w.visitedNodes, `pair ${i}`).toBeGreaterThan(0);
+      expect(w.stripFaces, `pair ${i}`).toBeGreaterThanOrEqual(json.paths[i].points.length - 1);
+      expect(w.passes, `pair ${i}`).toBeGreaterThanOrEqual(1);
+    }
     json.paths.forEach((path, i) => {
       const a = pointXYZ(mesh, pairs[i][0]), b = pointXYZ(mesh, pairs[i][1]);
       expect(Math.abs(path.length - dist(a, b)), `pair ${i}`).toBeLessThan(1e-9);
@@ -507,6 +518,15 @@ describe('splinekit trace', () => {
     const sum = json.stats.per_curve_ms.reduce((a, b) => a + b, 0);
     expect(Math.abs(json.stats.total_ms - sum)).toBeLessThanOrEqual(1e-3 * (controls.length + 1));
     expectReportedMs(json.stats.total_ms, 'total_ms');
+    // Work per curve: the control polygon's 3 sides are searched; 5 OLR levels join the 34 sides of
+    // the final polygon and those of every level before it, searched or straightened through known paths.
+    expect(json.stats.per_curve).toHaveLength(controls.length);
+    json.stats.per_curve.forEach((w, i) => {
+      expect(w.searchedPaths, `curve ${i}`).toBeGreaterThanOrEqual(3);
+      expect(w.searchedPaths + w.seededPaths, `curve ${i}`).toBeGreaterThanOrEqual(34);
+      expect(w.visitedNodes, `curve ${i}`).toBeGreaterThan(0);
+      expect(w.stripFaces, `curve ${i}`).toBeGreaterThanOrEqual(json.curves[i].points.length - 1);
+    });
   });
 
   test('--scheme rdc, --levels and --adaptive are accepted and change the curve', () => {

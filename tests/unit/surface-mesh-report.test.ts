@@ -64,9 +64,12 @@ test('every count of the mesh report lands in its own MeshInfo field', () => {
   expect(new Set(Object.values(expected)).size).toBe(Object.keys(expected).length); // all different
   const mesh = SurfaceMesh.fromArrays(positions, triangles);
   try {
-    const { bytes, warnings, ...counts } = mesh.info;
+    const { bytes, warnings, landmarks, buildMs, ...counts } = mesh.info;
     expect(counts).toEqual(expected);
     expect(bytes).toBeGreaterThan(0);
+    expect(landmarks).toBe(0); // (16 faces: below the landmarks' minimum)
+    expect(buildMs.mesh).toBeGreaterThanOrEqual(0);
+    expect(buildMs.search).toBeGreaterThanOrEqual(0);
     expect(warnings).toEqual([
       'welded 5 vertices that share a position with an earlier one',
       'ignored 6 vertices that no face uses',

@@ -34,16 +34,23 @@ class SurfaceMeshHandle {
   val positionsIn() { return view_of(positions_in_); }
   val trianglesIn() { return view_of(triangles_in_); }
 
-  int build() {
+  // Builds the mesh from positionsIn()/trianglesIn() and its solver with `landmarks` landmarks.
+  int build(int landmarks) {
     TriMesh mesh;
     std::string error;
+    auto start = clock::now();
     if (build_mesh(positions_in_.data(), int(positions_in_.size() / 3), triangles_in_.data(),
                    int(triangles_in_.size() / 3), mesh, error) != MeshStatus::kOk)
       return fail(error);
     tracer_.reset();
     solver_.reset();
     mesh_ = std::make_unique<TriMesh>(std::move(mesh));
-    solver_ = std::make_unique<GeodesicSolver>(*mesh_);
+    build_ms_[0] = elapsed(start);
+    start = clock::now();
+    ShortestPathOptions options;
+    options.landmarks = std::max(0, landmarks);
+    solver_ = std::make_unique<GeodesicSolver>(*mesh_, options);
+    build_ms_[1] = elapsed(start);
     tracer_ = std::make_unique<CurveTracer>(*solver_);
     std::vector<double>().swap(positions_in_);
     std::vector<int>().swap(triangles_in_);
@@ -60,6 +67,9 @@ class SurfaceMeshHandle {
   }
   double bytes() const { return mesh_ ? double(mesh_bytes(*mesh_) + solver_->bytes()) : 0; }
   double scale() const { return mesh_ ? mesh_->scale : 0; }
+  int landmarkCount() const { return solver_ ? solver_->landmarks().count() : 0; }
+  // Milliseconds of the last build(): 0 the mesh, 1 its solver (search graph and landmarks).
+  double buildMilliseconds(int part) const { return part == 0 || part == 1 ? build_ms_[part] : 0; }
 
   void resizePoints(int n) { points_in_.assign(3 * size_t(std::max(n, 0)), 0.0); }
   val pointsIn() { return view_of(points_in_); }
@@ -78,7 +88,8 @@ class SurfaceMeshHandle {
     if (!input(0, a) || !input(1, b)) return kInvalidInput;
     const auto start = clock::now();
     GeodesicPath path;
-    if (!solver_->shortest_path(a, b, path))
+    path_counters_ = {};
+    if (!solver_->shortest_path(a, b, path, &path_counters_))
       return fail("the two points lie on parts of the mesh that are not connected");
     ms_ = elapsed(start);
     path_points(*mesh_, path, scratch_);
@@ -131,16 +142,30 @@ class SurfaceMeshHandle {
     xyz_out_.clear();
     offsets_out_.assign(1, 0);
     curve_ms_.assign(curves, 0.0);
+    curve_counters_.assign(curves, TraceStats{});
     for (int c = 0; c < curves; ++c) {
       const auto start = clock::now();
+      tracer_->stats = {};
       tracer_->trace(polygons[c], options, scratch_);
       curve_ms_[c] = elapsed(start);
+      curve_counters_[c] = tracer_->stats;
       append(scratch_);
       offsets_out_.push_back(int(points_out_.size() / 3));
     }
     return kOk;
   }
   double curveMilliseconds(int c) const { return c >= 0 && c < int(curve_ms_.size()) ? curve_ms_[c] : 0; }
+  // The work counters of curve c of the last trace() (an empty object for another c), and of the last
+  // shortestPath(): the cost of a curve or path as the benchmarks report it.
+  val curveCounters(int c) const {
+    if (c < 0 || c >= int(curve_counters_.size())) return val::object();
+    const TraceStats& t = curve_counters_[c];
+    val out = counters(t.paths);
+    out.set("searchedPaths", t.shortest_paths);
+    out.set("seededPaths", t.seeded_paths);
+    return out;
+  }
+  val pathCounters() const { return counters(path_counters_); }
 
   // Point at t of the curve in pointsIn()[0..4).
   int evalCurve(double t, int scheme, int levels, double adaptive_degrees) {
@@ -221,6 +246,16 @@ class SurfaceMeshHandle {
   static double elapsed(clock::time_point start) {
     return std::chrono::duration<double, std::milli>(clock::now() - start).count();
   }
+  static val counters(const PathStats& s) {
+    val out = val::object();
+    out.set("searches", s.searches);
+    out.set("visitedNodes", s.visited_nodes);
+    out.set("stripFaces", s.strip_faces);
+    out.set("passes", s.passes);
+    out.set("flips", s.accepted_flips);
+    out.set("frozenVertices", s.frozen_vertices);
+    return out;
+  }
 
   int fail(std::string message) {
     error_ = std::move(message);
@@ -298,7 +333,9 @@ class SurfaceMeshHandle {
   std::vector<double> points_in_, xy_in_, points_out_, xyz_out_, curve_ms_;
   std::vector<int> offsets_out_;
   std::vector<MeshPoint> scratch_, spline_;
-  double length_ = 0, ms_ = 0;
+  std::vector<TraceStats> curve_counters_;
+  PathStats path_counters_;
+  double length_ = 0, ms_ = 0, build_ms_[2] = {0, 0};
   std::string error_;
 };
 
@@ -316,6 +353,8 @@ EMSCRIPTEN_BINDINGS(splinekit_surface) {
       .function("reportFields", &SurfaceMeshHandle::reportFields)
       .function("bytes", &SurfaceMeshHandle::bytes)
       .function("scale", &SurfaceMeshHandle::scale)
+      .function("landmarkCount", &SurfaceMeshHandle::landmarkCount)
+      .function("buildMilliseconds", &SurfaceMeshHandle::buildMilliseconds)
       .function("resizePoints", &SurfaceMeshHandle::resizePoints)
       .function("pointsIn", &SurfaceMeshHandle::pointsIn)
       .function("resizeXY", &SurfaceMeshHandle::resizeXY)
@@ -326,6 +365,8 @@ EMSCRIPTEN_BINDINGS(splinekit_surface) {
       .function("length", &SurfaceMeshHandle::length)
       .function("milliseconds", &SurfaceMeshHandle::milliseconds)
       .function("curveMilliseconds", &SurfaceMeshHandle::curveMilliseconds)
+      .function("curveCounters", &SurfaceMeshHandle::curveCounters)
+      .function("pathCounters", &SurfaceMeshHandle::pathCounters)
       .function("error", &SurfaceMeshHandle::error)
       .function("shortestPath", &SurfaceMeshHandle::shortestPath)
       .function("straightest", &SurfaceMeshHandle::straightest)

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -393,6 +394,17 @@ TEST(UnfoldStrip, LaysPointsOfSpaceInAFacesPlane) {
   EXPECT_NEAR((lifted - dropped).norm(), 0, 1e-12);
 }
 
+// Distance from x to a polyline of mesh points.
+double polyline_distance(const TriMesh& mesh, const std::vector<MeshPoint>& polyline, const Vec3& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k + 1 < polyline.size(); ++k) {
+    const Vec3 a = eval_position(mesh, polyline[k]), d = eval_position(mesh, polyline[k + 1]) - a;
+    const double t = d.squaredNorm() > 0 ? std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + t * d - x).norm());
+  }
+  return best;
+}
+
 TEST(ShortestPath, IsTheFunnelPathOfItsOwnStrip) {
   // Phase (iii) lays out its trial strips from the current one and takes up the current funnel path
   // where the strips agree. Whatever it kept, the path it returns must be the one the funnel finds
@@ -416,7 +428,16 @@ TEST(ShortestPath, IsTheFunnelPathOfItsOwnStrip) {
       plain.straighten(path.start, path.end, strip, again);
       ASSERT_EQ(again.strip, path.strip);
       EXPECT_NEAR(path_length(mesh, path), path_length(mesh, again), 1e-12 * mesh.scale) << "pair " << i;
-      for (size_t k = 0; k < path.lerps.size(); ++k) EXPECT_NEAR(path.lerps[k], again.lerps[k], 1e-9) << "pair " << i;
+      // The same crossings; where the path runs along an edge of its strip, crossing it at either
+      // end is the same polyline, so a crossing that differs must lie on the other path.
+      std::vector<MeshPoint> points, other;
+      path_points(mesh, again, other);
+      for (size_t k = 0; k < path.lerps.size(); ++k) {
+        if (std::abs(path.lerps[k] - again.lerps[k]) <= 1e-9) continue;
+        path_points(mesh, path, points);
+        EXPECT_LT(polyline_distance(mesh, other, eval_position(mesh, points[k + 1])), 1e-9 * mesh.scale)
+            << "pair " << i << " crossing " << k;
+      }
     }
   }
   EXPECT_GT(flipped, 400);  // (the straightening had work to do)

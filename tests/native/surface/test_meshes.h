@@ -1,17 +1,20 @@
-// Small meshes with known geometry for the surface tests: planar grids, a cube, a cylinder, and a
-// reader for the shared OBJ/PLY test data.
+// Small meshes with known geometry for the surface tests: planar grids, a cube, a cylinder, tubes
+// (a coil, a body with folded limbs), noise, and a reader for the shared OBJ/PLY test data.
 #pragma once
 
 #include "surface/mesh.h"
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -107,6 +110,113 @@ inline Arrays cylinder(int around, int up, double r = 1, double h = 2) {
                 a11 = (j + 1) * around + (i + 1) % around;
       a.triangles.insert(a.triangles.end(), {a00, a10, a11, a00, a11, a01});
     }
+  return a;
+}
+
+// ---- Shapes where points close in space are far apart on the surface (issue 17) ----------------
+
+// A tube around the centre line c(s), s in [0, 1], of radius r(s): along + 1 rings of `around`
+// vertices (a discrete rotation-minimising frame carried along the line), quads split in two; with
+// `caps` each end is closed by a fan to a vertex on the line.
+template <class Centre, class Radius>
+Arrays tube(Centre c, Radius r, int along, int around, bool caps) {
+  Arrays a;
+  auto at = [&](int i) { return c(double(std::clamp(i, 0, along)) / along); };
+  Vec3 tangent = (at(1) - at(0)).normalized();
+  Vec3 normal = tangent.cross(std::abs(tangent.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).normalized();
+  for (int i = 0; i <= along; ++i) {
+    tangent = (at(i + 1) - at(i - 1)).normalized();
+    normal = (normal - tangent * normal.dot(tangent)).normalized();
+    const Vec3 binormal = tangent.cross(normal), centre = at(i);
+    const double radius = r(double(i) / along);
+    for (int k = 0; k < around; ++k) {
+      const double phi = 2 * kPi * k / around;
+      const Vec3 p = centre + radius * (std::cos(phi) * normal + std::sin(phi) * binormal);
+      a.positions.insert(a.positions.end(), {p.x(), p.y(), p.z()});
+    }
+  }
+  for (int i = 0; i < along; ++i)
+    for (int k = 0; k < around; ++k) {
+      const int v00 = i * around + k, v01 = i * around + (k + 1) % around, v10 = v00 + around, v11 = v01 + around;
+      a.triangles.insert(a.triangles.end(), {v00, v01, v11, v00, v11, v10});
+    }
+  if (caps) {
+    const int first = a.vertices(), last = first + 1, end = along * around;
+    for (const Vec3& p : {at(0), at(along)}) a.positions.insert(a.positions.end(), {p.x(), p.y(), p.z()});
+    for (int k = 0; k < around; ++k) {
+      const int k1 = (k + 1) % around;
+      a.triangles.insert(a.triangles.end(), {first, k1, k, last, end + k, end + k1});
+    }
+  }
+  return a;
+}
+
+// A tube wound into `turns` turns of a helix of radius 1 and `pitch` per turn, tube radius
+// `radius`, open at both ends (the issue's: 8 turns, 0.12, 0.3, 4000 x 48 quads = 384k triangles).
+inline Arrays coil(int along, int around, int turns = 8, double radius = 0.12, double pitch = 0.3) {
+  auto centre = [&](double s) {
+    const double phi = 2 * kPi * turns * s;
+    return Vec3(std::cos(phi), std::sin(phi), pitch * turns * s);
+  };
+  return tube(
+      centre, [&](double) { return radius; }, along, around, false);
+}
+
+// A body with limbs folded against it: one closed tube whose middle is a fat body (radius 0.5,
+// length 3) and whose ends narrow into limbs (radius 0.12) that bend through 180 degrees and lie
+// along opposite sides of the body, 0.04 from it.
+inline Arrays folded_body(int along, int around) {
+  const double R = 0.5, r = 0.12, gap = 0.04, L = 3, offset = R + gap + r, bend = kPi * offset / 2, limb = 0.9 * L;
+  const double total = 2 * (limb + bend) + L;
+  auto centre = [=](double s) {
+    double t = s * total;
+    if (t < limb) return Vec3(offset, 0, L / 2 - limb + t);
+    t -= limb;
+    if (t < bend) {
+      const double phi = kPi * t / bend;
+      return Vec3(offset / 2 * (1 + std::cos(phi)), 0, L / 2 + offset / 2 * std::sin(phi));
+    }
+    t -= bend;
+    if (t < L) return Vec3(0, 0, L / 2 - t);
+    t -= L;
+    if (t < bend) {
+      const double phi = kPi * t / bend;
+      return Vec3(-offset / 2 * (1 - std::cos(phi)), 0, -L / 2 - offset / 2 * std::sin(phi));
+    }
+    return Vec3(-offset, 0, -L / 2 + (t - bend));
+  };
+  // Limb radius r, body radius R, blended (smoothstep) over 0.6 of length where bends meet the body.
+  auto radius = [=](double s) {
+    const double t = s * total, a = limb + bend, b = a + L, w = 0.6;
+    auto ramp = [](double x) { return x <= 0 ? 0 : x >= 1 ? 1 : x * x * (3 - 2 * x); };
+    return r + (R - r) * std::min(ramp((t - a) / w + 0.5), ramp((b - t) / w + 0.5));
+  };
+  return tube(centre, radius, along, around, true);
+}
+
+// Every vertex moved along its area-weighted normal by uniform noise in +-amount mean edge lengths
+// (a scan-like surface from a smooth one).
+inline Arrays noisy(Arrays a, double amount, unsigned seed) {
+  std::vector<Vec3> normals(a.vertices(), Vec3::Zero());
+  auto p = [&](int v) { return Vec3(a.positions[3 * v], a.positions[3 * v + 1], a.positions[3 * v + 2]); };
+  double sum = 0;
+  for (int f = 0; f < a.faces(); ++f) {
+    const int i = a.triangles[3 * f], j = a.triangles[3 * f + 1], k = a.triangles[3 * f + 2];
+    const Vec3 n = (p(j) - p(i)).cross(p(k) - p(i));
+    normals[i] += n, normals[j] += n, normals[k] += n;
+    sum += (p(j) - p(i)).norm() + (p(k) - p(j)).norm() + (p(i) - p(k)).norm();
+  }
+  const double h = sum / (3.0 * std::max(1, a.faces()));
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amount * h, amount * h);
+  // Copies of a vertex (a file that splits vertices) move together, by the first copy's normal.
+  std::map<std::array<double, 3>, Vec3> moved;
+  for (int v = 0; v < a.vertices(); ++v) {
+    const std::array<double, 3> key = {a.positions[3 * v], a.positions[3 * v + 1], a.positions[3 * v + 2]};
+    auto [it, fresh] = moved.try_emplace(key, Vec3::Zero());
+    if (fresh) it->second = u(rng) * (normals[v].norm() > 0 ? normals[v].normalized() : Vec3::Zero());
+    for (int d = 0; d < 3; ++d) a.positions[3 * v + d] += it->second[d];
+  }
   return a;
 }
 

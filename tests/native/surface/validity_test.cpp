@@ -14,7 +14,8 @@
 // appear unchanged and consecutive in the finer run has both segments from leaves the cut did not
 // touch, and must meet 5°.
 // The angles are measured on the traced polyline (the segments tracing actually produced). The
-// 369k-triangle spot_loop2 is left to the benchmarks: it alone takes ~14 s here.
+// 369k-triangle spot_loop2 is left to the benchmarks: it alone takes ~14 s here. Besides the shared
+// meshes: a coil, a body with folded limbs and a noisy spot (tests/native/surface/test_meshes.h).
 #include "common/geometry.h"
 #include "surface/curves.h"
 #include "surface/tangent.h"
@@ -27,6 +28,8 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace splinekit::surface {
 namespace {
@@ -183,9 +186,19 @@ TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
                           "mountain.obj",         "stanford_bunny.obj", "nefertiti.obj"};
   constexpr int kPolygons = 10;
   Smoothness total[2];  // RDC, OLR adaptive
-  for (const char* name : meshes) {
+  // The shared meshes, then generated shapes where points close in space are far apart on the
+  // surface (issue 17; large enough for the search's landmarks) and a noisy scan-like one.
+  std::vector<std::pair<std::string, testing::Arrays>> inputs;
+  for (const char* name : meshes)
+    inputs.emplace_back(name, testing::read_mesh(testing::shared_data(std::string("meshes/") + name)));
+  inputs.emplace_back("coil (8 turns)", testing::coil(800, 16));
+  inputs.emplace_back("folded body", testing::folded_body(600, 24));
+  inputs.emplace_back("noisy spot",
+                      testing::noisy(testing::read_mesh(testing::shared_data("meshes/spot.obj")), 0.3, 3));
+  for (const auto& [name_string, arrays] : inputs) {
+    const char* name = name_string.c_str();
     const auto t0 = std::chrono::steady_clock::now();
-    const TriMesh mesh = testing::build(testing::read_mesh(testing::shared_data(std::string("meshes/") + name)));
+    const TriMesh mesh = testing::build(arrays);
     GeodesicSolver solver(mesh);
     CurveTracer tracer(solver);
     const std::vector<int> faces = largest_component(mesh);

@@ -68,7 +68,7 @@ double olr_knot(int level, int k) {
 GeodesicPath CurveTracer::path(const MeshPoint& a, const MeshPoint& b) {
   GeodesicPath p;
   ++stats.shortest_paths;
-  if (!solver_.shortest_path(a, b, p, nullptr, search_)) {
+  if (!solver_.shortest_path(a, b, p, &stats.paths, search_)) {
     // Unreachable (another component): a degenerate path that stays at a.
     p = GeodesicPath{a, a, {a.face}, {}, {}};
   }
@@ -96,6 +96,11 @@ double CurveTracer::mean_face_area() {
 // faces seeds about 80% of the paths, and seeded paths came out shorter than searched ones more often
 // than longer; larger bounds seed more without being faster (also with chords, 2026-12-01: 128 to
 // 1024 on spot_loop2_369k within 4%), and the curves of nefertiti grow longer (0.4% at 128, 8% at 1024).
+// The fan is measured in space, which on a coil or a fold (pieces that run along the surface far from
+// the start in space) is large however well the pieces line up; there the region is also estimated
+// from the surface: a triangle with two sides of half the pieces' total length L over a base of d,
+// a lower bound on the distance between the ends (the larger of the Euclidean distance and 0.9 times
+// the landmark bound, landmarks.h), area d·sqrt(L² − d²)/4; the smaller estimate decides.
 GeodesicPath CurveTracer::seed_or_search(const std::vector<GeodesicPath>& pieces) {
   constexpr double kSeedFaces = 64;
   const TriMesh& mesh = solver_.mesh();
@@ -109,8 +114,15 @@ GeodesicPath CurveTracer::seed_or_search(const std::vector<GeodesicPath>& pieces
     area += (prev - pa).cross(next - pa).norm() / 2;
     prev = next;
   }
+  const Landmarks& landmarks = solver_.landmarks();
+  if (!landmarks.empty() && area > kSeedFaces * mean_face_area()) {
+    double L = 0;
+    for (const GeodesicPath& piece : pieces) L += path_length(mesh, piece);
+    const double d = std::max((eval_position(mesh, b) - pa).norm(), 0.9 * landmarks.bound_between(a.face, b.face));
+    area = std::min(area, d * std::sqrt(std::max(0.0, L * L - d * d)) / 4);
+  }
   GeodesicPath p;
-  if (area <= kSeedFaces * mean_face_area() && solver_.straighten_through(pieces, p)) {
+  if (area <= kSeedFaces * mean_face_area() && solver_.straighten_through(pieces, p, &stats.paths)) {
     ++stats.seeded_paths;
     return p;
   }

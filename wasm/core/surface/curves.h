@@ -43,6 +43,7 @@ using ControlPolygon = std::array<MeshPoint, 4>;
 struct TraceStats {
   int shortest_paths = 0;  // searched (phase (i) on the graph)
   int seeded_paths = 0;    // straightened through known paths instead
+  PathStats paths;         // the counters of all of them (search, strips, passes, flips)
 };
 
 class CurveTracer {

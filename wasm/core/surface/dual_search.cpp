@@ -34,7 +34,10 @@ int DualGraph::edge_of_node(int node) const {
 }
 
 DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
-    : mesh_(mesh), dual_heuristic_weight_(options.dual_heuristic_weight) {
+    : mesh_(mesh),
+      dual_heuristic_weight_(options.dual_heuristic_weight),
+      landmark_weight_(options.landmark_weight),
+      refined_landmark_scale_(options.refined_landmark_scale) {
   const int nf = static_cast<int>(mesh.triangles.size());
   graph_.faces = nf;
   graph_.steiner = std::max(1, options.steiner);
@@ -63,25 +66,26 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
     graph_.edge_offsets.assign(1, 0);
     for (int c : counts) graph_.edge_offsets.push_back(graph_.edge_offsets.back() + c);
   }
-  slot_.assign(graph_.nodes(), -1);
+  face_slot_.assign(nf, -1);
+  edge_slot_.assign(graph_.edges, -1);
   centroids_.resize(nf);
   for (int f = 0; f < nf; ++f) {
     const auto& t = mesh.triangles[f];
     centroids_[f] = ((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3).cast<float>();
   }
+  if (nf >= options.landmark_min_faces) landmarks_ = Landmarks(mesh, centroids_, options.landmarks);
 }
 
 size_t DualSearch::bytes() const {
   return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.edge_offsets.capacity()) *
              sizeof(int) +
-         slot_.capacity() * sizeof(int) + visits_.capacity() * sizeof(Visit) +
-         centroids_.capacity() * sizeof(centroids_[0]);
+         (face_slot_.capacity() + edge_slot_.capacity()) * sizeof(int) + visits_.capacity() * sizeof(Visit) +
+         centroids_.capacity() * sizeof(centroids_[0]) + landmarks_.bytes();
 }
 
-// Position of graph node `node`: a face centroid, or a point along an edge.
-Vec3 DualSearch::node_position(int node) const {
+// Position of graph node `node` (on edge e, -1 for a face node): a face centroid, or a point along an edge.
+Vec3 DualSearch::node_position(int node, int e) const {
   if (node < graph_.faces) return centroids_[node].cast<double>();
-  const int e = graph_.edge_of_node(node);
   const int first = graph_.first_node(e), count = graph_.end_node(e) - first;
   const int h = graph_.edge_halfedge[e];
   const auto& t = mesh_.triangles[h / 3];
@@ -127,48 +131,70 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   }
   const Vec3 pa = eval_position(mesh_, a);
   const Vec3 pb = eval_position(mesh_, b);
+  const Eigen::Vector3f pbf = pb.cast<float>();
   const double weight = dual ? dual_heuristic_weight_ : 1.0;
-  RingDeque& queue = queue_;
-  queue.clear();
-  visits_.clear();
-  double key_sum = 0;  // sum of (dist + heuristic) over queued nodes, for LLL
-  // The record of a node (made on first touch: its position is looked at many times).
-  auto visit = [&](int node) -> Visit& {
-    int& slot = slot_[node];
-    if (slot < 0) {
-      const Vec3 p = node_position(node);
-      slot = static_cast<int>(visits_.size());
-      visits_.push_back({std::numeric_limits<float>::infinity(), static_cast<float>(weight * (p - pb).norm()), node, -1,
-                         p.cast<float>(), false});
+  // The landmark term (landmarks.h): admissible on the dual graph; scaled down on the refined one.
+  const double landmark_weight = dual ? landmark_weight_ : refined_landmark_scale_;
+  if (!landmarks_.empty()) landmarks_.set_target(targets.data(), static_cast<int>(targets.size()));
+  // The A* term of a node at p on face f (its own face, or one of its edge's): the larger of the
+  // Euclidean and the landmark bounds, the latter moved from f's centroid to p.
+  auto heuristic = [&](const Vec3& p, int f) {
+    double h = weight * (p - pb).norm();
+    if (!landmarks_.empty()) {
+      const double bound = landmarks_.bound(f);
+      if (bound > 0) h = std::max(h, landmark_weight * (bound - (p - centroids_[f].cast<double>()).norm()));
     }
-    return visits_[slot];
+    return static_cast<float>(h);
+  };
+  std::vector<Entry>& heap = heap_;
+  heap.clear();
+  visits_.clear();
+  // The record of a node on edge e (-1: a face node), made on first touch (its position is looked at
+  // many times); the nodes of an edge get theirs together.
+  auto visit = [&](int node, int e) -> int {
+    if (e < 0) {
+      int& slot = face_slot_[node];
+      if (slot < 0) {
+        const Vec3 p = node_position(node, -1);
+        slot = static_cast<int>(visits_.size());
+        visits_.push_back(
+            {std::numeric_limits<float>::infinity(), heuristic(p, node), node, -1, p.cast<float>(), false});
+      }
+      return slot;
+    }
+    const int first = graph_.first_node(e);
+    int& slot = edge_slot_[e];
+    if (slot < 0) {
+      slot = static_cast<int>(visits_.size());
+      const int f = graph_.edge_halfedge[e] / 3;
+      for (int n = first, end = graph_.end_node(e); n < end; ++n) {
+        const Vec3 p = node_position(n, e);
+        visits_.push_back({std::numeric_limits<float>::infinity(), heuristic(p, f), n, -1, p.cast<float>(), false});
+      }
+    }
+    return slot + node - first;
   };
   auto key = [&](const Visit& v) { return v.dist + v.heuristic; };
-  // Relaxes `node` from `from`; SLF puts improved nodes at the front or the back of the deque.
-  auto relax = [&](int node, int from, float d) {
-    Visit& v = visit(node);
-    if (d >= v.dist) return;
-    if (v.queued) {
-      key_sum -= v.dist - d;
-    } else {
-      key_sum += d + v.heuristic;
-      v.queued = true;
-      if (!queue.empty() && d + v.heuristic < key(visits_[queue.front()]))
-        queue.push_front(slot_[node]);
-      else
-        queue.push_back(slot_[node]);
-    }
+  // Relaxes `node` (on edge e) from `from` at `at`, `d_from` from the source.
+  auto relax = [&](int node, int e, int from, const Eigen::Vector3f& at, float d_from) {
+    const int r = visit(node, e);
+    Visit& v = visits_[r];
+    const float d = d_from + (v.position - at).norm();
+    if (v.closed || d >= v.dist) return;
     v.dist = d;
     v.parent = from;
+    heap.push_back({key(v), r});
+    std::push_heap(heap.begin(), heap.end());
   };
-  // The nodes of face f: its centroid and the nodes on its edges (but those on `skip_edge`).
+  // The nodes of face f: its centroid and the nodes on its edges (but those on `skip_edge`), as
+  // each(node, edge) (edge -1 for the centroid).
   auto for_face_nodes = [&](int f, int skip_edge, auto&& each) {
-    each(f);
+    each(f, -1);
     if (dual) return;
     for (int k = 0; k < 3; ++k) {
       const int e = graph_.halfedge_edge[3 * f + k];
       if (e == skip_edge) continue;
-      for (int n = graph_.first_node(e), end = graph_.end_node(e); n < end; ++n) each(n);
+      for (int n = graph_.first_node(e), end = graph_.end_node(e); n < end; ++n) each(n, e);
     }
   };
   auto is_target = [&](int f) { return std::find(targets.begin(), targets.end(), f) != targets.end(); };
@@ -176,48 +202,40 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   int best_node = -1, best_face = -1;
   float best = std::numeric_limits<float>::infinity();
 
-  for (int s : sources)
-    for_face_nodes(s, -1, [&](int node) {
-      relax(node, -1, static_cast<float>((visit(node).position.cast<double>() - pa).norm()));
-    });
+  const Eigen::Vector3f paf = pa.cast<float>();
+  for (int s : sources) for_face_nodes(s, -1, [&](int node, int e) { relax(node, e, -1, paf, 0.f); });
 
   int visited = 0;
-  while (!queue.empty()) {
-    // LLL: nodes whose key exceeds the queue's mean go to the back (the deque holds records).
-    const double mean = key_sum / static_cast<double>(queue.size());
-    for (size_t moves = 0; moves < queue.size(); ++moves) {
-      const int r = queue.front();
-      if (key(visits_[r]) <= mean) break;
-      queue.pop_front();
-      queue.push_back(r);
-    }
-    const int r = queue.pop_front();
-    visits_[r].queued = false;
-    key_sum -= key(visits_[r]);
-    // A* bound: a node whose key reaches the best arrival cannot improve it (the deque is not a
-    // priority queue, so the search drains it instead of stopping at the first such node).
-    if (key(visits_[r]) >= best) {
-      if (dual) break;
-      continue;
-    }
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end());
+    const Entry top = heap.back();
+    heap.pop_back();
+    const int r = top.record;
+    if (top.key != key(visits_[r])) continue;  // stale: the node was reached shorter since
+    // A* bound: the smallest key reaches the best arrival, which nothing left can improve.
+    if (top.key >= best) break;
+    visits_[r].closed = true;
     ++visited;
     // (copies: visit() may grow visits_)
     const int u = visits_[r].node;
-    const float du = visits_[r].dist, hu = visits_[r].heuristic;
+    const float du = visits_[r].dist;
     const Eigen::Vector3f pu = visits_[r].position;
+    // Arrival: the straight segment from u to b inside target face f (weighted as the A* term was).
     auto arrive = [&](int f) {
-      if (is_target(f) && du + hu < best) best = du + hu, best_node = u, best_face = f;
+      if (!is_target(f)) return;
+      const float total = du + static_cast<float>(weight) * (pu - pbf).norm();
+      if (total < best) best = total, best_node = u, best_face = f;
     };
     auto expand_face = [&](int f, int skip_edge) {
       arrive(f);
-      for_face_nodes(f, skip_edge, [&](int node) {
-        if (node != u) relax(node, u, du + (visit(node).position - pu).norm());
+      for_face_nodes(f, skip_edge, [&](int node, int e) {
+        if (node != u) relax(node, e, u, pu, du);
       });
     };
     if (dual) {
       arrive(u);
       for (int g : mesh_.adjacency[u])
-        if (g >= 0) relax(g, u, du + (visit(g).position - pu).norm());
+        if (g >= 0) relax(g, -1, u, pu, du);
     } else if (u < nf) {
       expand_face(u, -1);
     } else {
@@ -228,9 +246,9 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
         if (f >= 0) expand_face(f, e);
     }
   }
-  if (stats) stats->visited_nodes += visited;
+  if (stats) ++stats->searches, stats->visited_nodes += visited;
 
-  auto parent = [&](int node) { return visits_[slot_[node]].parent; };
+  auto parent = [&](int node) { return visits_[slot(node)].parent; };
   if (best_face >= 0) {
     // Walk back: face nodes contribute their face, links the face they run through.
     strip.push_back(best_face);
@@ -261,12 +279,21 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
     std::reverse(strip.begin(), strip.end());
     strip.erase(std::unique(strip.begin(), strip.end()), strip.end());
   }
-  for (const Visit& v : visits_) slot_[v.node] = -1;
+  for (size_t i = 0; i < visits_.size(); ++i) {  // (an edge's records are consecutive)
+    const int node = visits_[i].node;
+    if (node < nf) {
+      face_slot_[node] = -1;
+    } else {
+      const int e = graph_.edge_of_node(node);
+      edge_slot_[e] = -1;
+      i += graph_.end_node(e) - graph_.first_node(e) - 1;
+    }
+  }
   visits_.clear();
   // A long refined search can touch most of the graph; its records are not kept beyond 2 MB.
   if (visits_.capacity() > (size_t{1} << 16)) visits_ = std::vector<Visit>();
   if (best_face < 0) return false;
-  remove_loops(strip, slot_);
+  remove_loops(strip, face_slot_);
   return true;
 }
 

@@ -1,15 +1,19 @@
 // Phase (i) of a locally shortest path (b/Surf §5.1 "Point-to-point shortest path", §6.2 for the
-// refined graph): an initial strip of faces from a search on the dual graph, with the
-// small-label-first and large-label-last deque heuristics (Bertsekas, "A simple and fast label
-// correcting algorithm for shortest paths", 1993) and an A* Euclidean term.
+// refined graph): an initial strip of faces from an A* search on the dual graph (a binary heap on
+// distance + A* term; the search ends when the smallest key reaches the best arrival). The A* term
+// is the larger of the Euclidean distance to the target and the landmark bound (landmarks.h), which
+// knows the surface: on coils and folds, where the Euclidean term says little, the search then
+// expands the nodes near the path rather than the mesh. (Until 2026-12-02 the search was label
+// correcting, with the SLF/LLL deque of Bertsekas 1993: it re-expanded nodes, and a tighter bound
+// did not make it cheaper.)
 #pragma once
 
 #include "surface/geodesic_options.h"
+#include "surface/landmarks.h"
 #include "surface/mesh.h"
 
 #include <Eigen/Core>
 
-#include <algorithm>
 #include <vector>
 
 namespace splinekit::surface {
@@ -38,44 +42,6 @@ struct DualGraph {
   int edge_of_node(int node) const;
 };
 
-// A growable ring buffer of ints: the deque of the SLF/LLL search.
-class RingDeque {
- public:
-  bool empty() const { return size_ == 0; }
-  size_t size() const { return size_; }
-  int front() const { return data_[head_]; }
-  void clear() { head_ = size_ = 0; }
-  void push_back(int x) {
-    grow();
-    data_[(head_ + size_) & mask_] = x;
-    ++size_;
-  }
-  void push_front(int x) {
-    grow();
-    head_ = (head_ + mask_) & mask_;
-    data_[head_] = x;
-    ++size_;
-  }
-  int pop_front() {
-    const int x = data_[head_];
-    head_ = (head_ + 1) & mask_;
-    --size_;
-    return x;
-  }
-
- private:
-  void grow() {
-    if (size_ < data_.size()) return;
-    std::vector<int> next(std::max<size_t>(64, 2 * data_.size()));
-    for (size_t i = 0; i < size_; ++i) next[i] = data_[(head_ + i) & mask_];
-    data_.swap(next);
-    head_ = 0;
-    mask_ = data_.size() - 1;
-  }
-  std::vector<int> data_;
-  size_t head_ = 0, size_ = 0, mask_ = 0;
-};
-
 // The graph of a mesh and the search over it, with its scratch reused between queries.
 class DualSearch {
  public:
@@ -87,7 +53,8 @@ class DualSearch {
 
   // ---- Queries ----
   const DualGraph& graph() const { return graph_; }
-  // Bytes held: the graph, the search records and the face centroids.
+  const Landmarks& landmarks() const { return landmarks_; }
+  // Bytes held: the graph, the search records, the face centroids and the landmark distances.
   size_t bytes() const;
 
   // ---- Mutators ----
@@ -97,30 +64,46 @@ class DualSearch {
                      SearchGraph graph = SearchGraph::kRefined);
   // A table of #nodes (>= #F) entries, -1 everywhere between calls: the search's, lent to
   // remove_loops and the straightening between searches (per-face marks) so the mesh pays for one.
-  std::vector<int>& face_marks() { return slot_; }
+  std::vector<int>& face_marks() { return face_slot_; }
 
  private:
-  Vec3 node_position(int node) const;
+  Vec3 node_position(int node, int edge) const;
   int link_face(int a, int b) const;  // a face holding both nodes
+  // The record of `node` (on edge `edge`, -1 for a face node); -1 when untouched.
+  int slot(int node, int edge) const {
+    return edge < 0 ? face_slot_[node] : edge_slot_[edge] < 0 ? -1 : edge_slot_[edge] + node - graph_.first_node(edge);
+  }
+  int slot(int node) const { return slot(node, node < graph_.faces ? -1 : graph_.edge_of_node(node)); }
 
   const TriMesh& mesh_;
-  double dual_heuristic_weight_;
+  double dual_heuristic_weight_, landmark_weight_, refined_landmark_scale_;
   DualGraph graph_;
-  // Search scratch, reused between queries. Only the nodes a search touches get a record, so the
-  // per-node cost is one int (slot_: the node's record, -1 when untouched; also the loop-removal
-  // table of strips, -1 everywhere between uses).
+  // Search scratch, reused between queries. Only the nodes a search touches get a record; the nodes
+  // of an edge get theirs together, so the per-node cost is one int per face and one per edge
+  // (face_slot_, edge_slot_: the record of the face node, of the edge's first node; -1 when
+  // untouched; face_slot_ is also the loop-removal table of strips, -1 everywhere between uses).
   struct Visit {
     float dist, heuristic;  // from the source; A* term to the target
     int node, parent;       // parent: a node, -1 at the source
     Eigen::Vector3f position;
-    bool queued;
+    bool closed;  // expanded (never again: with the scaled landmark term the A* term is not
+                  // quite consistent, and re-expanding nodes costs more than it gains)
   };
-  std::vector<int> slot_;
+  // Heap entries: key (dist + heuristic when pushed) and record; an entry whose key no longer
+  // matches its record's is stale and skipped.
+  struct Entry {
+    float key;
+    int record;
+    bool operator<(const Entry& o) const { return key > o.key; }  // (a min-heap with std::push_heap)
+  };
+  std::vector<int> face_slot_, edge_slot_;
   std::vector<Visit> visits_;
-  RingDeque queue_;
+  std::vector<Entry> heap_;
   std::vector<int> sources_, targets_;  // faces holding a and b
   // Face centroids in single precision (the face nodes' positions: one read instead of four).
   std::vector<Eigen::Vector3f> centroids_;
+  // Dual-graph distances from a few landmark faces (empty on small meshes).
+  Landmarks landmarks_;
 };
 
 }  // namespace splinekit::surface

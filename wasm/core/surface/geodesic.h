@@ -33,6 +33,7 @@ class GeodesicSolver {
   // ---- Queries ----
   const TriMesh& mesh() const { return mesh_; }
   const DualGraph& graph() const { return search_.graph(); }
+  const Landmarks& landmarks() const { return search_.landmarks(); }
   // Bytes held for the mesh: the graph, the search records, the face centroids, the vertex angle sums.
   size_t bytes() const { return search_.bytes() + straightener_.bytes(); }
 

@@ -21,13 +21,33 @@ struct ShortestPathOptions {
                                      // get one graph node per such length
   int steiner = 4;                   // graph nodes on every edge
   double dual_heuristic_weight = 3;  // weight of the A* Euclidean term in the kDual search
+  // Landmark lower bounds (landmarks.h) on meshes of at least landmark_min_faces faces: the A* term
+  // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
+  // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
+  // dual-graph distances overestimate the refined graph's (by up to a third on the coil of the
+  // benchmarks), so no scale is both admissible and useful: 0 (the default) leaves the refined search
+  // exact; 0.85 makes it ~40 times cheaper on that coil but only 90% of nefertiti's paths stay within
+  // 0.5% of the exact distance (BENCHMARKS.md, "Surface at scale").
+  int landmarks = 8;                  // landmarks per mesh (2 bytes per face each); 0: none
+  int landmark_min_faces = 16384;     // smaller meshes search fast enough on the Euclidean term
+  double landmark_weight = 3;         // kDual (as dual_heuristic_weight: a greedy search)
+  double refined_landmark_scale = 0;  // kRefined
 };
 
 // Counters for tests and benchmarks, summed over the calls they are passed to.
 struct PathStats {
+  int searches = 0;         // phase (i): searches run (shortest_path calls that searched)
   int visited_nodes = 0;    // phase (i): graph nodes taken from the queue and expanded
+  int strip_faces = 0;      // phase (ii): faces of the strips laid out and straightened
+  int passes = 0;           // phase (iii): straightening passes
   int accepted_flips = 0;   // phase (iii): flips (semi-star, zipper or chord) kept because they shortened the path
   int frozen_vertices = 0;  // phase (iii): vertices found locally shortest (or not flippable) and frozen
+
+  PathStats& operator+=(const PathStats& o) {
+    searches += o.searches, visited_nodes += o.visited_nodes, strip_faces += o.strip_faces, passes += o.passes;
+    accepted_flips += o.accepted_flips, frozen_vertices += o.frozen_vertices;
+    return *this;
+  }
 };
 
 }  // namespace splinekit::surface

@@ -29,10 +29,13 @@ void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vecto
   point_in_face(mesh_, b, strip.back(), path.end);
   path.lerps.clear();
   path.arc.clear();
+  if (stats) stats->strip_faces += static_cast<int>(strip.size());
   if (strip.size() == 1) return;
   begin(path.start, path.end, strip);
-  for (int passes = 0; options.straighten && passes < options.max_passes; ++passes)
+  for (int passes = 0; options.straighten && passes < options.max_passes; ++passes) {
+    if (stats) ++stats->passes;
     if (!pass(stats)) break;
+  }
   // Crossings of the final strip.
   crossings(unfolded_, apices_, path.lerps, path.arc);
   strip.assign(strip_.begin(), strip_.end());

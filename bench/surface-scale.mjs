@@ -1,0 +1,284 @@
+// "Surface at scale" (issue 17; `node bench/run.mjs --only=surface-scale`): curves and shortest paths
+// on shapes where points close in space are far apart on the surface (a coil, a body with folded
+// limbs), on a noisy scan-like surface, and on the shared meshes they were tuned on; with and without
+// the search's landmarks (wasm in Node, the same polygons and pairs in the same run), with the work
+// counters of every curve, and shortest paths against geometry-central's flipOut (potpourri3d,
+// native; benchmark only) and the exact polyhedral distance (MMP, native).
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import { join } from 'node:path';
+import { SurfaceMesh, parseMesh, randomMeshPoints, traceBezier } from '../dist/index.js';
+import { mulberry32 } from '../dist/core/random.js';
+import { meshHandles } from '../dist/surface/mesh-handle.js';
+import { continuityChecker, moderatePolygons, percentile } from './surface.mjs';
+
+/** The benchmark meshes: shared ones and generated ones (bench/native/surface_scale_bench.cpp). */
+export const SCALE_MESHES = [
+  { name: 'nefertiti', shared: 'nefertiti.obj' },
+  { name: 'spot_loop2_369k', shared: 'spot_loop2_369k.ply' },
+  { name: 'noisy spot_loop2_369k', shape: 'noisy', from: 'spot_loop2_369k.ply', what: 'spot_loop2_369k, vertices moved along their normals by ±0.3 mean edge lengths' },
+  { name: 'coil', shape: 'coil', what: 'a tube coiled into 8 turns (helix radius 1, tube radius 0.12, pitch 0.3), 4000 × 48 quads split in two' },
+  { name: 'folded body', shape: 'folded', what: 'a body (radius 0.5) whose two limbs (radius 0.12) bend back and lie along it 0.04 away, 3000 × 64 quads and end caps' },
+];
+
+const OLR = { scheme: 'olr', levels: 5 };
+
+/**
+ * Every benchmark mesh as an OBJ of the arrays the package parses (build/bench/shapes/), so that the
+ * wasm side, the exact reference and flipOut number vertices alike. Generated shapes are made once.
+ */
+async function meshFile(root, data, spec) {
+  const dir = join(root, 'build/bench/shapes');
+  mkdirSync(dir, { recursive: true });
+  const out = join(dir, `${spec.name.replace(/\W+/g, '_')}.obj`);
+  if (existsSync(out)) return out;
+  const tool = join(root, 'build/native/surface_scale_bench');
+  if (spec.shape) {
+    execFileSync(tool, ['shape', spec.shape, out, ...(spec.from ? [join(data, 'meshes', spec.from)] : [])]);
+    return out;
+  }
+  const { positions, triangles } = await parseMesh(readFileSync(join(data, 'meshes', spec.shared)), spec.shared);
+  const lines = [];
+  for (let i = 0; i < positions.length; i += 3) lines.push(`v ${positions[i]} ${positions[i + 1]} ${positions[i + 2]}`);
+  for (let i = 0; i < triangles.length; i += 3) lines.push(`f ${triangles[i] + 1} ${triangles[i + 1] + 1} ${triangles[i + 2] + 1}`);
+  writeFileSync(out, `${lines.join('\n')}\n`);
+  return out;
+}
+
+const COUNTERS = ['searchedPaths', 'seededPaths', 'visitedNodes', 'stripFaces', 'passes', 'flips'];
+
+function summary(ms, counters) {
+  const out = { curves: ms.length, median_ms: percentile(ms, 0.5), p90_ms: percentile(ms, 0.9), p99_ms: percentile(ms, 0.99), max_ms: Math.max(...ms) };
+  if (counters) out.median_counters = Object.fromEntries(COUNTERS.map((k) => [k, percentile(counters.map((c) => c[k]), 0.5)]));
+  if (counters) out.p99_counters = Object.fromEntries(COUNTERS.map((k) => [k, percentile(counters.map((c) => c[k]), 0.99)]));
+  return out;
+}
+
+/** Traces the polygons (OLR, 5 levels): per-curve ms and counters, and how many are valid. */
+function traceAll(mesh, polygons) {
+  const shares = continuityChecker(mesh);
+  const ms = [], counters = [];
+  let valid = 0;
+  for (const p of polygons) {
+    const traced = traceBezier(mesh, p, OLR);
+    ms.push(traced.ms);
+    counters.push(traced.counters);
+    let ok = true;
+    for (let k = 0; k + 1 < traced.points.length && ok; k++) ok = shares(traced.points[k], traced.points[k + 1]);
+    valid += ok;
+  }
+  return { ms, counters, valid };
+}
+
+/** Random vertex pairs (vertices of random faces): `sources` sources with `targets` targets each. */
+function vertexPairs(mesh, sources, targets, seed) {
+  const random = mulberry32(seed), t = mesh.triangles, faces = t.length / 3;
+  const vertex = () => t[3 * Math.floor(random() * faces) + Math.floor(random() * 3)];
+  const pairs = [];
+  for (let s = 0; s < sources; s++) {
+    const a = vertex();
+    for (let k = 0; k < targets; k++) {
+      let b = vertex();
+      while (b === a) b = vertex();
+      pairs.push([a, b]);
+    }
+  }
+  return pairs;
+}
+
+function shortestPaths(mesh, pairs) {
+  const handle = meshHandles.get(mesh);
+  const ms = [], lengths = [], nodes = [];
+  for (const [a, b] of pairs) {
+    const path = mesh.shortestPath(mesh.vertexPoint(a), mesh.vertexPoint(b));
+    ms.push(handle.milliseconds());
+    lengths.push(path.length);
+    nodes.push(handle.pathCounters().visitedNodes);
+  }
+  return { ms, lengths, nodes };
+}
+
+function accuracy(lengths, exact) {
+  if (!exact) return { within_pct: null, shorter: null, worst_ratio: null };
+  let within = 0, shorter = 0, worst = 1;
+  lengths.forEach((l, i) => {
+    const r = l / exact[i];
+    within += r <= 1.005;
+    shorter += l < exact[i] * (1 - 1e-9);
+    worst = Math.max(worst, r);
+  });
+  return { within_pct: (100 * within) / lengths.length, shorter, worst_ratio: worst };
+}
+
+function flipOut(root, file, pairs) {
+  const python = join(root, 'build/pyenv/bin/python');
+  if (!existsSync(python)) return { error: 'potpourri3d not installed (python3 -m venv build/pyenv && build/pyenv/bin/pip install potpourri3d)' };
+  const out = execFileSync(python, [join(root, 'bench/flipout.py'), file], { input: JSON.stringify({ pairs }), encoding: 'utf8', maxBuffer: 1 << 26 });
+  return JSON.parse(out);
+}
+
+/** Exact distances of the pairs (MMP, native), or {error} when the solve takes over `seconds`. */
+function exactDistances(root, file, pairs, seconds = 300) {
+  try {
+    const out = execFileSync(join(root, 'build/native/surface_scale_bench'), ['exact', file], { input: pairs.map((p) => p.join(' ')).join('\n'), encoding: 'utf8', maxBuffer: 1 << 26, timeout: 1000 * seconds });
+    return JSON.parse(out);
+  } catch (err) {
+    return { error: `exact distances (MMP) not computed within ${seconds} s (${err.code ?? err.signal ?? 'failed'})`, distances: null };
+  }
+}
+
+const sum = (xs) => xs.reduce((a, b) => a + b, 0);
+
+/**
+ * options: curves (random whole-surface and 3%-disc polygons traced with landmarks, default 100),
+ * baseline (how many of them also without landmarks, 20), sources × targets of the shortest paths
+ * (2 × 10), log.
+ */
+export async function surfaceScaleBenchmarks(root, data, options = {}) {
+  const { curves = 100, baseline = 20, sources = 2, targets = 10, meshes = SCALE_MESHES, log = () => {} } = options;
+  const load_before = os.loadavg()[0];
+  const t_start = performance.now();
+  const rows = [];
+  for (const spec of meshes) {
+    const file = await meshFile(root, data, spec);
+    const bytes = readFileSync(file);
+    const row = { name: spec.name, what: spec.what ?? `../shared/data/meshes/${spec.shared}`, file_mb: statSync(file).size / 2 ** 20 };
+    const t0 = performance.now();
+    const results = {};
+    let random, disc, pairs;
+    for (const landmarks of [8, 0]) {
+      const mesh = await SurfaceMesh.load(bytes, 'mesh.obj', { landmarks });
+      const key = landmarks ? 'with' : 'without';
+      if (!random) {
+        row.faces = mesh.faceCount;
+        row.warnings = mesh.info.warnings;
+        const points = randomMeshPoints(mesh, 4 * curves, 3);
+        random = Array.from({ length: curves }, (_, i) => points.slice(4 * i, 4 * i + 4));
+        disc = moderatePolygons(mesh, curves, 3, 0.03);
+        pairs = vertexPairs(mesh, sources, targets, 5);
+      }
+      const n = landmarks ? curves : baseline;
+      for (let i = 0; i < 10; i++) traceBezier(mesh, disc[i % curves], OLR); // warm-up
+      const r = traceAll(mesh, random.slice(0, n));
+      const d = traceAll(mesh, disc.slice(0, n));
+      const g = shortestPaths(mesh, pairs);
+      results[key] = {
+        landmarks: mesh.info.landmarks, bytes_per_triangle: mesh.info.bytes / mesh.faceCount, build_ms: mesh.info.buildMs,
+        random: { ...summary(r.ms, r.counters), valid: r.valid }, disc: { ...summary(d.ms, d.counters), valid: d.valid },
+        // The first `baseline` curves, for the same-curves comparison.
+        random_first: summary(r.ms.slice(0, baseline)), disc_first: summary(d.ms.slice(0, baseline)),
+        geodesic: { ms: g.ms, lengths: g.lengths, median_nodes: percentile(g.nodes, 0.5) },
+      };
+      mesh.dispose();
+      log(`surface-scale ${spec.name} ${key} landmarks: random median ${results[key].random.median_ms.toFixed(2)} p99 ${results[key].random.p99_ms.toFixed(1)} ms, disc p99 ${results[key].disc.p99_ms.toFixed(2)} ms, geodesic mean ${(sum(g.ms) / g.ms.length).toFixed(2)} ms`);
+    }
+    row.with = results.with;
+    row.without = results.without;
+    row.wasm_seconds = (performance.now() - t0) / 1000;
+    const exact = exactDistances(root, file, pairs);
+    const flip = flipOut(root, file, pairs);
+    row.geodesics = {
+      pairs: pairs.length, sources, targets, exact_ms_per_source: exact.ms_per_source, exact_error: exact.error,
+      ours: { total_ms: sum(results.with.geodesic.ms), median_ms: percentile(results.with.geodesic.ms, 0.5), median_nodes: results.with.geodesic.median_nodes, ...accuracy(results.with.geodesic.lengths, exact.distances) },
+      without_landmarks: { total_ms: sum(results.without.geodesic.ms), median_ms: percentile(results.without.geodesic.ms, 0.5), median_nodes: results.without.geodesic.median_nodes, ...accuracy(results.without.geodesic.lengths, exact.distances) },
+      flipout: flip.error ? { error: flip.error } : { construct_ms: flip.construct_ms, total_ms: sum(flip.ms), median_ms: percentile(flip.ms, 0.5), ...accuracy(flip.lengths, exact.distances) },
+    };
+    delete results.with.geodesic;
+    delete results.without.geodesic;
+    log(`surface-scale ${spec.name}: geodesics ours ${row.geodesics.ours.total_ms.toFixed(0)} ms (${row.geodesics.ours.within_pct}% within 0.5%), flipOut ${row.geodesics.flipout.total_ms?.toFixed(0)} ms (${row.geodesics.flipout.within_pct}%)`);
+    rows.push(row);
+  }
+  return { curves, baseline, meshes: rows, seconds: (performance.now() - t_start) / 1000, load_average: [load_before, os.loadavg()[0]] };
+}
+
+const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
+const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
+
+/** The "Surface at scale" section of BENCHMARKS.md. */
+export function surfaceScaleSection(s, { date, machine }) {
+  const m = s.meshes;
+  const curves = [
+    '| mesh | triangles | landmarks | bytes / triangle | search build ms | random: median | p90 | p99 | max | valid | 3% disc: median | p99 | max | valid |',
+    '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+    ...m.map((r) => {
+      const w = r.with;
+      return `| ${r.name} | ${r.faces} | ${w.landmarks} | ${f(w.bytes_per_triangle, 1)} | ${f(w.build_ms.search, 0)} | **${f(w.random.median_ms)}** | ${f(w.random.p90_ms)} | **${f(w.random.p99_ms, 1)}** | ${f(w.random.max_ms, 1)} | ${pct((100 * w.random.valid) / w.random.curves)} | ${f(w.disc.median_ms)} | **${f(w.disc.p99_ms)}** | ${f(w.disc.max_ms)} | ${pct((100 * w.disc.valid) / w.disc.curves)} |`;
+    }),
+  ];
+  const before = [
+    `| mesh | random (first ${s.baseline}): median without → with landmarks | p99 without → with | 3% disc: median without → with | p99 without → with | bytes / triangle without → with |`,
+    '|---|---:|---:|---:|---:|---:|',
+    ...m.map((r) => `| ${r.name} | ${f(r.without.random.median_ms)} → ${f(r.with.random_first.median_ms)} ms | ${f(r.without.random.p99_ms, 1)} → ${f(r.with.random_first.p99_ms, 1)} ms | ${f(r.without.disc.median_ms)} → ${f(r.with.disc_first.median_ms)} ms | ${f(r.without.disc.p99_ms)} → ${f(r.with.disc_first.p99_ms)} ms | ${f(r.without.bytes_per_triangle, 1)} → ${f(r.with.bytes_per_triangle, 1)} |`),
+  ];
+  const work = [
+    '| mesh | curves | searched paths | seeded paths | nodes expanded | strip faces | passes | flips |',
+    '|---|---|---:|---:|---:|---:|---:|---:|',
+    ...m.flatMap((r) => [['random, with', r.with.random], ['random, without', r.without.random], ['3% disc, with', r.with.disc]].map(([k, x]) =>
+      `| ${r.name} | ${k} | ${COUNTERS.map((c) => `${f(x.median_counters[c], 0)} / ${f(x.p99_counters[c], 0)}`).join(' | ')} |`)),
+  ];
+  const geo = [
+    '| mesh | pairs | ours ms (total) | median ms | nodes (median) | within 0.5% | shorter | worst | without landmarks ms | flipOut ms (total) | flipOut within 0.5% | flipOut worst | ours / flipOut |',
+    '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+    ...m.map((r) => {
+      const g = r.geodesics, o = g.ours, fl = g.flipout;
+      return `| ${r.name} | ${g.pairs} | ${f(o.total_ms, 0)} | ${f(o.median_ms)} | ${f(o.median_nodes, 0)} | **${pct(o.within_pct)}** | ${o.shorter ?? '–'} | ${f(o.worst_ratio, 4)} | ${f(g.without_landmarks.total_ms, 0)} | ${fl.error ? fl.error : f(fl.total_ms, 0)} | ${pct(fl.within_pct)} | ${f(fl.worst_ratio, 4)} | **${fl.error ? '–' : f(o.total_ms / fl.total_ms)}** |`;
+    }),
+  ];
+  const shapes = m.map((r) => `- **${r.name}**: ${r.what}.`).join('\n');
+  return `## Surface at scale
+
+Issue 17: curves and shortest paths where points close in space lie far apart on the surface. ${date},
+${machine}; wasm in Node through the TS API; these measurements took ${f(s.seconds, 0)} s, the 1-minute
+load average was ${f(s.load_average[0], 1)} at their start and ${f(s.load_average[1], 1)} at their end (other work shared the 2 cores).
+Meshes (the generated ones are made by bench/native/surface_scale_bench.cpp from
+tests/native/surface/test_meshes.h, the shapes the validity tests use at a smaller size):
+
+${shapes}
+
+The search of phase (i) bounds the distance still to go by landmarks (wasm/core/surface/landmarks.h:
+A*, landmarks and the triangle inequality, Goldberg & Harrelson 2005): 8 landmark faces chosen by
+farthest-point sampling on the dual graph, their dual-graph distances stored as 16-bit values per face
+(16 bytes per triangle), one Dijkstra search each when the mesh is built ("search build ms": search graph
+and landmarks, in wasm). Per-curve ms is traceBezier's (OLR, 5 levels, the wasm work); ${s.curves} random
+polygons (control points uniform over the area, seed 3) and ${s.curves} in a 3% disc (4 control points at the ends of
+straightest geodesics from a random centre, up to 3% of the bounding-box diagonal). Valid: every two
+consecutive polyline points share a face. Targets: random median ≤ 5 ms, p99 ≤ 50 ms; 3% disc p99 ≤ 16 ms.
+
+${curves.join('\n')}
+
+The same first ${s.baseline} polygons of each kind without landmarks (SurfaceMesh option \`landmarks: 0\`, the
+Euclidean A* term alone, as before) and with them, in the same run (each mesh with landmarks first, then
+without: with the load falling during the run, the times compare the coil and the folded body, where
+they differ several-fold, better than the shared meshes, where the counters below say the work is
+about the same):
+
+${before.join('\n')}
+
+Work per curve, median / p99 over the curves (SurfaceMeshHandle counters, summed over a curve's
+shortest paths): paths searched and seeded (straightened through known paths), graph nodes the
+searches expanded, faces of the strips straightened, straightening passes, flips kept:
+
+${work.join('\n')}
+
+Shortest paths between random vertex pairs (${m[0]?.geodesics.sources} sources × ${m[0]?.geodesics.targets} targets per mesh), ours
+(SurfaceMesh.shortestPath: refined search graph, funnel, flips; wasm, timed inside the module) against
+geometry-central's flipOut (potpourri3d's EdgeFlipGeodesicSolver.find_geodesic_path, native C++, timed in
+Python around the call; its solver construction is not counted) on the same pairs, and both against the
+exact polyhedral distance (tests/native/reference/exact_geodesic.h, MMP, native). Shorter: paths shorter
+than exact by more than 1e-9 relative (must be 0).
+
+${geo.join('\n')}
+
+${geoNote(m)}
+${m.filter((r) => r.geodesics.exact_error).map((r) => `\n${r.name}: ${r.geodesics.exact_error}; no accuracy there.`).join('')}
+`;
+}
+
+function geoNote(m) {
+  const timed = m.filter((r) => r.geodesics.flipout.total_ms);
+  const slow = timed.filter((r) => r.geodesics.ours.total_ms > r.geodesics.flipout.total_ms);
+  const exact = timed.filter((r) => r.geodesics.ours.within_pct != null);
+  const better = exact.filter((r) => r.geodesics.ours.within_pct >= r.geodesics.flipout.within_pct);
+  return `Ours is slower than flipOut on ${slow.length} of ${timed.length} meshes (the refined search keeps its Euclidean A* term: ShortestPathOptions::refined_landmark_scale and "Why these defaults" in the surface section say why), and at least as often within 0.5% of the exact distance on ${better.length} of ${exact.length} (not on ${exact.filter((r) => !better.includes(r)).map((r) => r.name).join(', ') || 'none'}).`;
+}
