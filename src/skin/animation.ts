@@ -41,16 +41,25 @@ function checkKeyframes(keyframes: readonly Keyframe[], handles: number): void {
   });
 }
 
-/** The pose at `time`: held before the first and after the last keyframe, interpolated between. */
-export function poseAt(keyframes: readonly Keyframe[], time: number): AffineMatrix[] {
+/**
+ * The per-handle values at `time` of keyframes sorted by time (at least one): held before the first
+ * and after the last keyframe, `interpolate(a, b, u)` with u in [0, 1] between two. Any kind of
+ * handle transform: 2D matrices (poseAt) or the editor's 3D handle poses.
+ */
+export function keyframesAt<T>(keyframes: readonly { time: number; transforms: readonly T[] }[], time: number, interpolate: (a: T, b: T, u: number) => T): T[] {
   if (time <= keyframes[0].time) return [...keyframes[0].transforms];
   const last = keyframes[keyframes.length - 1];
   if (time >= last.time) return [...last.transforms];
   let i = 0;
   while (keyframes[i + 1].time < time) i++;
   const a = keyframes[i], b = keyframes[i + 1];
-  const t = (time - a.time) / (b.time - a.time);
-  return a.transforms.map((m, h) => interpolateMatrix(m, b.transforms[h], t));
+  const u = (time - a.time) / (b.time - a.time);
+  return a.transforms.map((m, h) => interpolate(m, b.transforms[h], u));
+}
+
+/** The pose at `time`: held before the first and after the last keyframe, interpolated between. */
+export function poseAt(keyframes: readonly Keyframe[], time: number): AffineMatrix[] {
+  return keyframesAt(keyframes, time, interpolateMatrix);
 }
 
 /** Options of {@link animatedSVG}. */

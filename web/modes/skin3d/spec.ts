@@ -1,3 +1,4 @@
+import { keyframesAt } from '../../../src/index.js';
 import { appendHandlePoses, dropHandlePoses, type Animated } from '../../app/keyframes.js';
 
 /**
@@ -129,15 +130,7 @@ export function interpolatePose(a: HandlePose, b: HandlePose, u: number): Handle
 
 /** The pose at `time`: held before the first and after the last keyframe, interpolated between. */
 export function poseAt3D(keyframes: Skin3DSpec['keyframes'], time: number): HandlePose[] {
-  if (keyframes.length === 0) return [];
-  if (time <= keyframes[0].time) return [...keyframes[0].transforms];
-  const last = keyframes[keyframes.length - 1];
-  if (time >= last.time) return [...last.transforms];
-  let i = 0;
-  while (keyframes[i + 1].time < time) i++;
-  const a = keyframes[i], b = keyframes[i + 1];
-  const u = (time - a.time) / (b.time - a.time);
-  return a.transforms.map((p, k) => interpolatePose(p, b.transforms[k], u));
+  return keyframes.length === 0 ? [] : keyframesAt(keyframes, time, interpolatePose);
 }
 
 /** The handle nearest to `c` at rest, or -1. */
