@@ -1,6 +1,8 @@
 import DOMPurify from 'dompurify';
 import { messageOf } from '../app/errors.js';
 import { SHAPE_ATTRIBUTE, fixedFormatter, formatNumber, type Matrix, type SvgDocument } from '../../src/index.js';
+import type { Spline } from '../../src/spline/spline.js';
+import { invert, isIdentity } from '../../src/svg/matrix.js';
 import type { Viewport } from './viewport.js';
 
 /** A shape the drawing leaves out (its path is left empty), or the whole drawing when it cannot be shown. */
@@ -30,7 +32,35 @@ interface Target {
   drawn: Float64Array[];
   /** Sets the map its gradients and patterns follow (SvgDocument.paintFollower), or null. */
   follow: ((m: Matrix | null) => void) | null;
+  /** The shape's transform (user space → document) the two fields below were computed for. */
+  transform: Matrix | null;
+  /** Document → the element's user space: undefined for the identity, null when singular. */
+  toLocal: Matrix | null | undefined;
+  /** The largest stretch of a user-space unit in document units (the transform's largest singular value). */
+  stretch: number;
+  /**
+   * The path was last written during a live change with fewer digits than a still view uses (or
+   * not rewritten for a change smaller than a pixel's fraction): the next still view writes it
+   * again at full precision.
+   */
+  coarse: boolean;
 }
+
+/** Options of {@link SvgLayer.show}. */
+export interface ShowOptions {
+  /**
+   * A live change (a drag, playback) that another show follows when it ends: paths are written
+   * with the digits the current zoom can show (to 1/LIVE_PRECISION of a pixel), and shapes that
+   * moved less than SKIP_PX on screen since they were written are left as they are. The next show
+   * that is not live writes every such path again exactly as a still view does.
+   */
+  live?: boolean;
+}
+
+/** While live, path numbers are written to 1/LIVE_PRECISION of a screen pixel. */
+const LIVE_PRECISION = 20;
+/** While live, a shape whose points all moved less than this many screen pixels is not rewritten. */
+export const SKIP_PX = 0.05;
 
 /** Live markup written elsewhere (the import worker) for a document, consumed by its first mount. */
 const primed = new WeakMap<SvgDocument, string>();
@@ -67,6 +97,8 @@ export class SvgLayer {
   private targets: Target[] = [];
   /** Writes path numbers to 1e-7 of the drawing's size: finer than the deepest zoom shows, and quick. */
   private format: (v: number) => string = String;
+  /** The decimals `format` writes (more than 9: 12 significant digits). */
+  private decimals = 0;
 
   constructor(container: HTMLElement) {
     this.host = document.createElement('div');
@@ -92,7 +124,7 @@ export class SvgLayer {
    * another version of the shown document (a clone, a posed copy) it writes only the paths whose
    * splines changed.
    */
-  show(doc: SvgDocument | null, viewport: Viewport): DrawingStats {
+  show(doc: SvgDocument | null, viewport: Viewport, options: ShowOptions = {}): DrawingStats {
     const t0 = performance.now();
     if (!doc) {
       this.unmount();
@@ -108,10 +140,11 @@ export class SvgLayer {
         return { shapes: 0, written: 0, ms: performance.now() - t0, skipped: [{ element: '<svg>', reason: `the drawing could not be shown: ${messageOf(err)}` }] };
       }
       const decimals = Math.ceil(Math.log10(1e7 / doc.size));
-      this.format = decimals > 9 ? formatNumber : fixedFormatter(Math.max(0, decimals));
+      this.decimals = Math.max(0, decimals);
+      this.format = decimals > 9 ? formatNumber : formatterFor(this.decimals);
     }
     this.doc = doc;
-    const { written, skipped } = this.write(doc);
+    const { written, skipped } = this.write(doc, options.live ? viewport.scale : null);
     this.setView(viewport);
     return { shapes: this.targets.length, written, ms: performance.now() - t0, skipped };
   }
@@ -168,48 +201,138 @@ export class SvgLayer {
     for (const el of Array.from(svg.querySelectorAll(`[${SHAPE_ATTRIBUTE}]`))) byIndex.set(Number(el.getAttribute(SHAPE_ATTRIBUTE)), el);
     doc.shapes.forEach((_, i) => {
       const el = byIndex.get(i);
-      if (el) this.targets.push({ el, shape: i, drawn: [], follow: doc.paintFollower(i, svg, el) });
+      if (el) this.targets.push({ el, shape: i, drawn: [], follow: doc.paintFollower(i, svg, el), transform: null, toLocal: null, stretch: 1, coarse: false });
     });
   }
 
-  /** Writes the paths whose splines differ from what they were last written from. */
-  private write(doc: SvgDocument): { written: number; skipped: SkippedShape[] } {
+  /**
+   * Writes the paths whose splines differ from what they were last written from (and, when still,
+   * those last written coarsely). `liveScale`: the view's pixels per document unit during a live
+   * change, null for a still view.
+   */
+  private write(doc: SvgDocument, liveScale: number | null): { written: number; skipped: SkippedShape[] } {
     let written = 0;
     const skipped: SkippedShape[] = [];
+    const all = doc.splines;
     for (const t of this.targets) {
-      const splines = doc.splinesOf(t.shape);
-      if (sameSplines(splines, t.drawn)) continue;
-      remember(t, splines);
-      if (!splines.every((s) => s.points.every(Number.isFinite))) {
-        const shape = doc.shapes[t.shape];
+      const shape = doc.shapes[t.shape];
+      const first = shape.firstSpline, count = shape.splineCount;
+      if (shape.transform !== t.transform) {
+        t.transform = shape.transform;
+        const inv = invert(shape.transform);
+        t.toLocal = inv && isIdentity(inv) ? undefined : inv;
+        t.stretch = largestStretch(shape.transform);
+      }
+      const moved = liveScale !== null ? largestMove(all, first, count, t.drawn) : sameSplines(all, first, count, t.drawn) ? 0 : Infinity;
+      if (moved === 0 && !(t.coarse && liveScale === null)) continue;
+      // While live, a change smaller than a pixel's fraction waits for the still view.
+      if (liveScale !== null && moved * liveScale < SKIP_PX) {
+        t.coarse = true;
+        continue;
+      }
+      if (moved !== 0) remember(t, all, first, count);
+      t.coarse = false;
+      if (!allFinite(all, first, count)) {
         skipped.push({ element: `<${shape.tag}${shape.id ? ` id="${shape.id}"` : ''}>${shape.line ? ` at line ${shape.line}` : ''}`, reason: 'a coordinate is not a finite number' });
         t.el.setAttribute('d', '');
         continue;
       }
-      t.el.setAttribute('d', doc.pathData(t.shape, this.format) ?? '');
-      t.follow?.(doc.paintTransform(t.shape));
+      let format = this.format;
+      if (liveScale !== null) {
+        // Digits for 1/LIVE_PRECISION of a pixel in the element's own units.
+        const decimals = Math.max(0, Math.ceil(Math.log10(LIVE_PRECISION * liveScale * t.stretch)));
+        if (decimals < this.decimals || this.decimals > 9) {
+          format = formatterFor(Math.min(9, decimals));
+          t.coarse = true;
+        }
+      }
+      t.el.setAttribute('d', t.toLocal === null ? '' : writePathData(all, first, count, t.toLocal, format));
+      if (moved !== 0 || liveScale === null) t.follow?.(doc.paintTransform(t.shape));
       written++;
     }
     return { written, skipped };
   }
 }
 
-/** Keeps a copy of the points a path is written from, in the arrays it had when the sizes match. */
-function remember(t: Target, splines: readonly { points: ArrayLike<number> }[]): void {
-  if (t.drawn.length !== splines.length) t.drawn = new Array<Float64Array>(splines.length);
-  splines.forEach((s, k) => {
-    const kept = t.drawn[k];
-    if (kept?.length === s.points.length) kept.set(s.points);
-    else t.drawn[k] = Float64Array.from(s.points);
-  });
+/** fixedFormatter(d) for d = 0…9, made once. */
+const FORMATTERS: ((v: number) => string)[] = [];
+function formatterFor(decimals: number): (v: number) => string {
+  return (FORMATTERS[decimals] ??= fixedFormatter(decimals));
 }
 
-function sameSplines(splines: readonly { points: ArrayLike<number> }[], drawn: readonly Float64Array[]): boolean {
-  if (splines.length !== drawn.length) return false;
-  for (let k = 0; k < splines.length; k++) {
-    const a = splines[k].points, b = drawn[k];
+/**
+ * Path data of splines[first … first + count) mapped by `m` (document → user space; undefined for
+ * none), numbers written by `format`: the same text as SvgDocument.pathData (splinesToPathData),
+ * "M p0 C p1 p2 p3 …" with "Z" after closed splines, written in one pass.
+ */
+export function writePathData(splines: readonly Pick<Spline, 'closed' | 'points'>[], first: number, count: number, m: Matrix | undefined, format: (v: number) => string): string {
+  let d = '';
+  for (let s = first; s < first + count; s++) {
+    const { closed, points: p } = splines[s];
+    const n = p.length / 2;
+    if (n === 0) continue;
+    const segs = n <= 1 ? 0 : closed ? n / 3 : (n - 1) / 3;
+    for (let j = 0, last = 3 * segs; j <= last; j++) {
+      const i = j === last && closed && segs > 0 ? 0 : j;
+      const x = p[2 * i], y = p[2 * i + 1];
+      const sep = j === 0 ? 'M' : j % 3 === 1 ? 'C' : ' ';
+      if (m) d += sep + format(m.a * x + m.c * y + m.e) + ' ' + format(m.b * x + m.d * y + m.f);
+      else d += sep + format(x) + ' ' + format(y);
+    }
+    if (closed) d += 'Z';
+  }
+  return d;
+}
+
+/** The largest singular value of a transform's linear part: how far it stretches a unit. */
+function largestStretch(m: Matrix): number {
+  const sum = m.a * m.a + m.b * m.b + m.c * m.c + m.d * m.d, det = m.a * m.d - m.b * m.c;
+  return Math.sqrt((sum + Math.sqrt(Math.max(0, sum * sum - 4 * det * det))) / 2);
+}
+
+/** Keeps a copy of the points a path is written from, in the arrays it had when the sizes match. */
+function remember(t: Target, all: readonly Spline[], first: number, count: number): void {
+  if (t.drawn.length !== count) t.drawn = new Array<Float64Array>(count);
+  for (let k = 0; k < count; k++) {
+    const points = all[first + k].points, kept = t.drawn[k];
+    if (kept?.length === points.length) kept.set(points);
+    else t.drawn[k] = Float64Array.from(points);
+  }
+}
+
+function sameSplines(all: readonly Spline[], first: number, count: number, drawn: readonly Float64Array[]): boolean {
+  if (count !== drawn.length) return false;
+  for (let k = 0; k < count; k++) {
+    const a = all[first + k].points, b = drawn[k];
     if (a.length !== b.length) return false;
     for (let j = 0; j < a.length; j++) if (a[j] !== b[j]) return false;
+  }
+  return true;
+}
+
+/**
+ * The largest coordinate change (document units) of the shape's points since they were last
+ * written: 0 when none changed, Infinity when the structure did or a change is not finite.
+ */
+function largestMove(all: readonly Spline[], first: number, count: number, drawn: readonly Float64Array[]): number {
+  if (count !== drawn.length) return Infinity;
+  let most = 0;
+  for (let k = 0; k < count; k++) {
+    const a = all[first + k].points, b = drawn[k];
+    if (a.length !== b.length) return Infinity;
+    for (let j = 0; j < a.length; j++) {
+      if (a[j] === b[j]) continue;
+      const change = Math.abs(a[j] - b[j]);
+      if (!(change <= most)) most = change; // NaN (and Infinity) stay
+    }
+  }
+  return Number.isNaN(most) ? Infinity : most;
+}
+
+function allFinite(all: readonly Spline[], first: number, count: number): boolean {
+  for (let k = first; k < first + count; k++) {
+    const p = all[k].points;
+    for (let j = 0; j < p.length; j++) if (!Number.isFinite(p[j])) return false;
   }
   return true;
 }
