@@ -4,6 +4,7 @@ import { SHAPE_ATTRIBUTE, fixedFormatter, formatNumber, type Matrix, type SvgDoc
 import type { Spline } from '../../src/spline/spline.js';
 import { invert, isIdentity } from '../../src/svg/matrix.js';
 import type { Viewport } from './viewport.js';
+import { paintLive, planLivePainting, type LivePlan } from './live-canvas.js';
 
 /** A shape the drawing leaves out (its path is left empty), or the whole drawing when it cannot be shown. */
 export interface SkippedShape {
@@ -19,6 +20,8 @@ export interface DrawingStats {
   shapes: number;
   /** Shapes whose path was written this time (all of them when the markup is mounted). */
   written: number;
+  /** Shapes painted on the live canvas instead (a live show of a drawing it can paint), else 0. */
+  painted: number;
   /** Time to mount the markup or write the changed paths, in milliseconds (the browser paints after). */
   ms: number;
   /** Shapes that could not be drawn from their splines; everything else was. */
@@ -99,6 +102,15 @@ export class SvgLayer {
   private format: (v: number) => string = String;
   /** The decimals `format` writes (more than 9: 12 significant digits). */
   private decimals = 0;
+  /** The canvas a live change is painted on, over the (hidden) drawing, when the plan allows. */
+  private readonly live: HTMLCanvasElement;
+  private liveContext: CanvasRenderingContext2D | null = null;
+  /** How the mounted drawing is painted live (made at its first live show), or null. */
+  private plan: LivePlan | null = null;
+  /** Whether the live canvas shows the drawing now. */
+  private painting = false;
+  private painted = 0;
+  private liveFrames = 0;
 
   constructor(container: HTMLElement) {
     this.host = document.createElement('div');
@@ -112,11 +124,15 @@ export class SvgLayer {
     style.textContent = ':host { all: initial; display: block; position: absolute; inset: 0; overflow: hidden; pointer-events: none; contain: strict; }'
       + ' :host([hidden]) { display: none; }'
       + ' .paper { position: absolute; background: #fff; outline: 1px solid rgba(0, 0, 0, 0.35); }'
-      + ' svg.drawing { position: absolute; left: 0; top: 0; }';
+      + ' svg.drawing { position: absolute; left: 0; top: 0; }'
+      + ' canvas.live { position: absolute; left: 0; top: 0; } canvas.live[hidden] { display: none; }';
     this.paper = document.createElement('div');
     this.paper.className = 'paper';
     this.paper.hidden = true;
-    this.root.append(style, this.paper);
+    this.live = document.createElement('canvas');
+    this.live.className = 'live';
+    this.live.hidden = true;
+    this.root.append(style, this.paper, this.live);
   }
 
   /**
@@ -128,7 +144,7 @@ export class SvgLayer {
     const t0 = performance.now();
     if (!doc) {
       this.unmount();
-      return { shapes: 0, written: 0, ms: 0, skipped: [] };
+      return { shapes: 0, written: 0, painted: 0, ms: 0, skipped: [] };
     }
     const mounted = this.doc !== null && this.svg !== null && this.doc.sameMarkup(doc) && this.doc.shapes.length === doc.shapes.length;
     if (!mounted) {
@@ -137,16 +153,23 @@ export class SvgLayer {
       } catch (err) {
         // Nothing is drawn, and the view says why; the document itself is open.
         this.unmount();
-        return { shapes: 0, written: 0, ms: performance.now() - t0, skipped: [{ element: '<svg>', reason: `the drawing could not be shown: ${messageOf(err)}` }] };
+        return { shapes: 0, written: 0, painted: 0, ms: performance.now() - t0, skipped: [{ element: '<svg>', reason: `the drawing could not be shown: ${messageOf(err)}` }] };
       }
       const decimals = Math.ceil(Math.log10(1e7 / doc.size));
       this.decimals = Math.max(0, decimals);
       this.format = decimals > 9 ? formatNumber : formatterFor(this.decimals);
     }
     this.doc = doc;
+    if (options.live && this.livePlan(doc)) {
+      // Painted on the canvas from the splines; the markup is written when the change ends.
+      this.setView(viewport);
+      return { shapes: this.targets.length, written: 0, painted: this.painted, ms: performance.now() - t0, skipped: [] };
+    }
     const { written, skipped } = this.write(doc, options.live ? viewport.scale : null);
+    // In the same frame as the paths are written: the drawing comes back in place of the canvas.
+    if (this.painting) this.stopPainting();
     this.setView(viewport);
-    return { shapes: this.targets.length, written, ms: performance.now() - t0, skipped };
+    return { shapes: this.targets.length, written, painted: 0, ms: performance.now() - t0, skipped };
   }
 
   /** Places the drawing for the view: the visible document rectangle becomes the viewBox. */
@@ -163,9 +186,58 @@ export class SvgLayer {
     const [x, y, w, h] = doc.frame;
     const [sx, sy] = viewport.toScreen(x, y);
     Object.assign(this.paper.style, { left: `${sx}px`, top: `${sy}px`, width: `${w * viewport.scale}px`, height: `${h * viewport.scale}px` });
+    if (this.painting) this.paint(viewport);
+  }
+
+  /**
+   * Whether `doc` can be shown on the live canvas (the plan is made at the first live show of a
+   * mounted drawing); when it can, the canvas takes the drawing's place until a still show.
+   */
+  private livePlan(doc: SvgDocument): boolean {
+    const svg = this.svg;
+    if (!svg) return false;
+    if (this.plan === null) {
+      const shapeOf = new Map<Element, number>(this.targets.map((t) => [t.el, t.shape]));
+      this.plan = planLivePainting(svg, doc, shapeOf, (id) => this.root.getElementById(id));
+      if ('unsupported' in this.plan) console.info(`splinekit: live changes are drawn by the browser (the live canvas cannot draw ${this.plan.unsupported})`);
+    }
+    if ('unsupported' in this.plan) return false;
+    if (!this.painting) {
+      this.painting = true;
+      this.live.hidden = false;
+      svg.style.visibility = 'hidden';
+    }
+    return true;
+  }
+
+  /** Back from the live canvas to the browser's drawing (its paths just written). */
+  private stopPainting(): void {
+    this.painting = false;
+    this.live.hidden = true;
+    if (this.svg) this.svg.style.visibility = '';
+  }
+
+  /** Paints the live canvas for the view (while painting). */
+  private paint(viewport: Viewport): void {
+    const plan = this.plan, doc = this.doc;
+    if (!plan || 'unsupported' in plan || !doc) return;
+    const ratio = window.devicePixelRatio || 1;
+    const w = Math.round(viewport.width * ratio), h = Math.round(viewport.height * ratio);
+    const c = this.live;
+    if (c.width !== w || c.height !== h) {
+      c.width = w;
+      c.height = h;
+      c.style.width = `${viewport.width}px`;
+      c.style.height = `${viewport.height}px`;
+    }
+    this.painted = paintLive(this.liveContext ??= c.getContext('2d')!, plan, doc, viewport, ratio);
+    // One attribute per painted frame, for whoever watches what the page shows (the drag benchmark).
+    c.dataset.frame = String(++this.liveFrames);
   }
 
   private unmount(): void {
+    if (this.painting) this.stopPainting();
+    this.plan = null;
     this.svg?.remove();
     this.svg = null;
     this.doc = null;
@@ -193,7 +265,7 @@ export class SvgLayer {
     for (const name of ['x', 'y', 'transform']) svg.removeAttribute(name);
     svg.setAttribute('preserveAspectRatio', 'none');
     svg.classList.add('drawing');
-    this.root.append(svg);
+    this.paper.after(svg);
     this.svg = svg;
     this.paper.hidden = false;
 

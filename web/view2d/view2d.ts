@@ -121,8 +121,9 @@ export class View2D {
 
   /** Draws the shown document's current splines (after geometry changed). */
   rebuild(options: ShowOptions = {}): void {
+    // The WebGL canvas holds only overlays, which ask for their own frames when they change: a
+    // frame of it here would redraw and read back an unchanged canvas (software GL) per pose.
     this.events.emit('drawing', this.drawing.show(this.doc, this.viewport, options));
-    this.requestRender();
   }
 
   fit(): void {
