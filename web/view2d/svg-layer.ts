@@ -1,10 +1,10 @@
-import DOMPurify from 'dompurify';
 import { messageOf } from '../app/errors.js';
 import { SHAPE_ATTRIBUTE, fixedFormatter, formatNumber, type Matrix, type SvgDocument } from '../../src/index.js';
 import type { Spline } from '../../src/spline/spline.js';
 import { invert, isIdentity } from '../../src/svg/matrix.js';
 import type { Viewport } from './viewport.js';
 import { paintLive, planLivePainting, type LivePlan } from './live-canvas.js';
+import { sanitizeSvg } from './sanitize.js';
 
 /** A shape the drawing leaves out (its path is left empty), or the whole drawing when it cannot be shown. */
 export interface SkippedShape {
@@ -85,10 +85,11 @@ export function primeLiveMarkup(doc: SvgDocument, markup: string): void {
  * document (a pose, an edit) rewrites only the paths whose splines changed; pan and zoom only move
  * the viewBox, so the browser re-renders at the current zoom.
  *
- * The markup is sanitised (DOMPurify, SVG profiles) before it enters the page: scripts, event
- * handler attributes and foreign objects are dropped, so a hostile file cannot run code in the
- * editor, and references outside the file (links, images, stylesheets on the network) are
- * dropped, so opening it fetches nothing — as when the browser shows a file as an image.
+ * The markup is sanitised (sanitizeSvg, an allow-list of SVG elements and attributes) before it
+ * enters the page: scripts, event handler attributes, foreign objects and animations that could
+ * set links are dropped, so a hostile file cannot run code in the editor, and references outside
+ * the file (links, images, stylesheets and url(…)s on the network) are dropped, so opening it
+ * fetches nothing — as when the browser shows a file as an image.
  */
 export class SvgLayer {
   /** The element holding the drawing (under the WebGL canvas, which stays transparent). */
@@ -252,14 +253,7 @@ export class SvgLayer {
     const parsed = new DOMParser().parseFromString(markup, 'image/svg+xml');
     const source = parsed.documentElement;
     if (source.localName !== 'svg') throw new Error('its markup did not parse back');
-    DOMPurify.sanitize(source, {
-      IN_PLACE: true,
-      USE_PROFILES: { svg: true, svgFilters: true },
-      ADD_TAGS: ['use'],
-      ADD_ATTR: [SHAPE_ATTRIBUTE],
-      FORBID_TAGS: ['foreignObject', 'script'],
-    });
-    cleanMarkup(source);
+    sanitizeSvg(source, (el) => el.hasAttribute(SHAPE_ATTRIBUTE));
     const svg = document.importNode(source, true) as unknown as SVGSVGElement;
     // The view decides what is visible; the file's own size and placement no longer apply.
     for (const name of ['x', 'y', 'transform']) svg.removeAttribute(name);
@@ -407,49 +401,4 @@ function allFinite(all: readonly Spline[], first: number, count: number): boolea
     for (let j = 0; j < p.length; j++) if (!Number.isFinite(p[j])) return false;
   }
   return true;
-}
-
-/** Attributes holding numbers, lengths or lists of them, which the browser parses as 32-bit floats. */
-const NUMERIC_ATTRIBUTES = new Set([
-  'd', 'points', 'transform', 'gradientTransform', 'patternTransform', 'viewBox', 'x', 'y', 'width', 'height', 'r', 'rx', 'ry',
-  'cx', 'cy', 'fx', 'fy', 'fr', 'x1', 'y1', 'x2', 'y2', 'offset', 'stroke-width', 'stroke-dasharray', 'stroke-dashoffset',
-  'stroke-miterlimit', 'opacity', 'fill-opacity', 'stroke-opacity', 'stop-opacity', 'refX', 'refY', 'markerWidth', 'markerHeight',
-  'font-size', 'stdDeviation', 'dx', 'dy', 'rotate',
-]);
-/** Largest finite 32-bit float. */
-const FLOAT32_MAX = 3.4028234663852886e38;
-
-/** A reference inside the file (`#id`) or embedded in it (a data: image). */
-const LOCAL_REFERENCE = /^\s*(#|data:image\/)/i;
-
-/** CSS with its references outside the file removed (url(…) to other places, @import). */
-function localCSS(text: string): string {
-  return text.replace(/@import[^;]*;?/gi, '').replace(/url\(\s*(['"]?)([^)'"]*)\1\s*\)/gi, (all, _q: string, target: string) => (LOCAL_REFERENCE.test(target) ? all : 'none'));
-}
-
-/**
- * One pass over the sanitised markup, before it enters the page:
- * - references to anything outside the file go (href attributes that are not `#id` or a data:
- *   image, url(…) to other places and @import in style attributes and style sheets), so opening
- *   a file fetches nothing;
- * - numeric attributes with a number a 32-bit float cannot hold go (the model leaves such shapes
- *   as they are and warns): the browser would refuse them with a console error and draw nothing of
- *   them anyway. The path data of shapes drawn from the splines is not read: it is rewritten next.
- */
-function cleanMarkup(root: Element): void {
-  for (const el of [root, ...Array.from(root.getElementsByTagName('*'))]) {
-    const fromSplines = el.hasAttribute(SHAPE_ATTRIBUTE);
-    for (const attr of Array.from(el.attributes)) {
-      const name = attr.localName;
-      if (name === 'href') {
-        if (!LOCAL_REFERENCE.test(attr.value)) el.removeAttributeNode(attr);
-      } else if (name === 'style') {
-        if (/url\(|@import/i.test(attr.value)) attr.value = localCSS(attr.value);
-      } else if (NUMERIC_ATTRIBUTES.has(name) && !(fromSplines && name === 'd')) {
-        const numbers = attr.value.match(/[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?/g) ?? [];
-        if (numbers.some((n) => !(Math.abs(Number(n)) <= FLOAT32_MAX))) el.removeAttributeNode(attr);
-      }
-    }
-    if (el.localName === 'style' && el.textContent) el.textContent = localCSS(el.textContent);
-  }
 }
