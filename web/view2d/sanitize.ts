@@ -118,33 +118,43 @@ function allowedElement(el: Element): boolean {
 }
 
 function cleanAttributes(el: Element, fromSplines: boolean, report: SanitizeReport): void {
-  const attrs = el.attributes;
-  for (let i = attrs.length - 1; i >= 0; i--) {
-    const attr = attrs[i];
-    const name = attr.localName ?? attr.name, ns = attr.namespaceURI;
-    let keep: boolean;
-    if ((ns === null || ns === '') && attr.name.includes(':')) {
-      // A prefix without a namespace: only xml: (bound by XML itself, which some DOMs leave unset).
-      keep = attr.name === 'xml:space' || attr.name === 'xml:lang';
-    } else if (ns === null || ns === '') {
-      const lower = name.toLowerCase();
-      keep = !lower.startsWith('on') && (ATTRIBUTES.has(lower) || lower.startsWith('data-') || lower.startsWith('aria-'));
-    } else if (ns === XLINK_NS) {
-      keep = name === 'href' || name === 'title';
-    } else {
-      keep = ns === XML_NS ? name === 'space' || name === 'lang' : ns === XMLNS_NS;
-    }
-    if (keep) {
-      const value = attr.value;
-      if (name === 'href') keep = LOCAL_REFERENCE.test(value);
-      else if (name === 'style' || URL_ATTRIBUTES.has(name)) {
-        if (/url\(|@import/i.test(value)) attr.value = localCSS(value);
-      } else if (NUMERIC_ATTRIBUTES.has(name) && !(fromSplines && name === 'd')) keep = !unrepresentable(value);
-    }
-    if (!keep) {
-      el.removeAttributeNode(attr);
-      report.attributes++;
-    }
+  // Attribute names as strings where the DOM has them (a browser does not make an Attr node per
+  // attribute then); an attribute without a prefix has no namespace.
+  if (typeof el.getAttributeNames !== 'function') {
+    const attrs = el.attributes;
+    for (let i = attrs.length - 1; i >= 0; i--) cleanAttribute(el, attrs[i].name, attrs[i], fromSplines, report);
+    return;
+  }
+  for (const name of el.getAttributeNames()) cleanAttribute(el, name, name.includes(':') ? el.getAttributeNode(name) : null, fromSplines, report);
+}
+
+/** Keeps, rewrites or removes attribute `qname` of `el` (`attr`: its node, needed when it has a prefix). */
+function cleanAttribute(el: Element, qname: string, attr: Attr | null, fromSplines: boolean, report: SanitizeReport): void {
+  const ns = attr ? attr.namespaceURI : null;
+  const name = attr ? (attr.localName ?? qname) : qname;
+  let keep: boolean;
+  if ((ns === null || ns === '') && qname.includes(':')) {
+    // A prefix without a namespace: only xml: (bound by XML itself, which some DOMs leave unset).
+    keep = qname === 'xml:space' || qname === 'xml:lang';
+  } else if (ns === null || ns === '') {
+    const lower = name.toLowerCase();
+    keep = !lower.startsWith('on') && (ATTRIBUTES.has(lower) || lower.startsWith('data-') || lower.startsWith('aria-'));
+  } else if (ns === XLINK_NS) {
+    keep = name === 'href' || name === 'title';
+  } else {
+    keep = ns === XML_NS ? name === 'space' || name === 'lang' : ns === XMLNS_NS;
+  }
+  if (keep) {
+    if (name === 'href') keep = LOCAL_REFERENCE.test(el.getAttribute(qname) ?? '');
+    else if (name === 'style' || URL_ATTRIBUTES.has(name)) {
+      const value = el.getAttribute(qname) ?? '';
+      if (/url\(|@import/i.test(value)) el.setAttribute(qname, localCSS(value));
+    } else if (NUMERIC_ATTRIBUTES.has(name) && !(fromSplines && name === 'd')) keep = !unrepresentable(el.getAttribute(qname) ?? '');
+  }
+  if (!keep) {
+    if (attr) el.removeAttributeNode(attr);
+    else el.removeAttribute(qname);
+    report.attributes++;
   }
 }
 

@@ -111,6 +111,8 @@ export class SvgLayer {
   /** Whether the live canvas shows the drawing now. */
   private painting = false;
   private painted = 0;
+  /** The markup was just mounted (its paths written from the splines as they are). */
+  private mounted = false;
   private liveFrames = 0;
 
   constructor(container: HTMLElement) {
@@ -166,7 +168,10 @@ export class SvgLayer {
       this.setView(viewport);
       return { shapes: this.targets.length, written: 0, painted: this.painted, ms: performance.now() - t0, skipped: [] };
     }
-    const { written, skipped } = this.write(doc, options.live ? viewport.scale : null);
+    const result = this.write(doc, options.live ? viewport.scale : null), skipped = result.skipped;
+    // A mount writes every path (in its markup).
+    const written = this.mounted ? this.targets.length : result.written;
+    this.mounted = false;
     // In the same frame as the paths are written: the drawing comes back in place of the canvas.
     if (this.painting) this.stopPainting();
     this.setView(viewport);
@@ -265,10 +270,17 @@ export class SvgLayer {
 
     const byIndex = new Map<number, Element>();
     for (const el of Array.from(svg.querySelectorAll(`[${SHAPE_ATTRIBUTE}]`))) byIndex.set(Number(el.getAttribute(SHAPE_ATTRIBUTE)), el);
-    doc.shapes.forEach((_, i) => {
+    doc.shapes.forEach((shape, i) => {
       const el = byIndex.get(i);
-      if (el) this.targets.push({ el, shape: i, drawn: [], follow: doc.paintFollower(i, svg, el), transform: null, toLocal: null, stretch: 1, coarse: false });
+      if (!el) return;
+      const t: Target = { el, shape: i, drawn: [], follow: doc.paintFollower(i, svg, el), transform: null, toLocal: null, stretch: 1, coarse: false };
+      // The markup has every shape's path written from these very splines (and its paint following
+      // it): remembered as drawn, not written again. Shapes with a coordinate that is not a finite
+      // number are left for write(), which empties them and says so.
+      if (allFinite(doc.splines, shape.firstSpline, shape.splineCount)) remember(t, doc.splines, shape.firstSpline, shape.splineCount);
+      this.targets.push(t);
     });
+    this.mounted = true;
   }
 
   /**
