@@ -277,7 +277,10 @@ export class SvgLayer {
       // The markup has every shape's path written from these very splines (and its paint following
       // it): remembered as drawn, not written again. Shapes with a coordinate that is not a finite
       // number are left for write(), which empties them and says so.
-      if (allFinite(doc.splines, shape.firstSpline, shape.splineCount)) remember(t, doc.splines, shape.firstSpline, shape.splineCount);
+      if (allFinite(doc.splines, shape.firstSpline, shape.splineCount)) {
+        remember(t, doc.splines, shape.firstSpline, shape.splineCount);
+        t.follow?.(doc.paintTransform(i));
+      }
       this.targets.push(t);
     });
     this.mounted = true;
