@@ -66,7 +66,7 @@ const LIVE_PRECISION = 20;
 export const SKIP_PX = 0.05;
 
 /** Live markup written elsewhere (the import worker) for a document, consumed by its first mount. */
-const primed = new WeakMap<SvgDocument, string>();
+const primed = new WeakMap<SvgDocument, string | Element>();
 
 /**
  * Gives the view `doc`'s live markup, `doc.toSVG({ rewrite: 'all', tagShapes: true })`, written
@@ -75,6 +75,29 @@ const primed = new WeakMap<SvgDocument, string>();
  */
 export function primeLiveMarkup(doc: SvgDocument, markup: string): void {
   primed.set(doc, markup);
+}
+
+/**
+ * Parses and sanitises the live markup primed for `doc` now (a step of its own, so that opening
+ * a large file does not do all its work in one task); its mount then imports the result. When
+ * the markup does not parse, it stays primed as text, and the mount reports why.
+ */
+export function parsePrimedMarkup(doc: SvgDocument): void {
+  const markup = primed.get(doc);
+  if (typeof markup !== 'string') return;
+  try {
+    primed.set(doc, parsedMarkup(markup));
+  } catch {
+    // The mount parses it again and says what is wrong.
+  }
+}
+
+/** The sanitised root element of live markup (in a document of its own). */
+function parsedMarkup(markup: string): Element {
+  const source = new DOMParser().parseFromString(markup, 'image/svg+xml').documentElement;
+  if (source.localName !== 'svg') throw new Error('its markup did not parse back');
+  sanitizeSvg(source, (el) => el.hasAttribute(SHAPE_ATTRIBUTE));
+  return source;
 }
 
 /**
@@ -255,10 +278,7 @@ export class SvgLayer {
     this.unmount();
     const markup = primed.get(doc) ?? doc.toSVG({ rewrite: 'all', tagShapes: true });
     primed.delete(doc);
-    const parsed = new DOMParser().parseFromString(markup, 'image/svg+xml');
-    const source = parsed.documentElement;
-    if (source.localName !== 'svg') throw new Error('its markup did not parse back');
-    sanitizeSvg(source, (el) => el.hasAttribute(SHAPE_ATTRIBUTE));
+    const source = typeof markup === 'string' ? parsedMarkup(markup) : markup;
     const svg = document.importNode(source, true) as unknown as SVGSVGElement;
     // The view decides what is visible; the file's own size and placement no longer apply.
     for (const name of ['x', 'y', 'transform']) svg.removeAttribute(name);
