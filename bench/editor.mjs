@@ -283,5 +283,9 @@ it and two frames have been presented; the "longest stall" is the largest gap be
 animation frames in that time (how long the page froze; the generated file's are medians of
 ${r.big_runs} runs; the mesh's of ${r.mesh_runs} runs, opened after Surface mode showed its sample, goal ≤ 3 s). The end-to-end tests check what these mean (the sample's
 colors on the canvas, the file's counts as Node parses them), not how long they take.
+Opening an SVG is a sequence of tasks with a frame between them: the worker's parse, rebuilding
+the document on the page, parsing and sanitising (an allow-list walk) the markup the view mounts,
+mounting it, and the browser's first style, layout and paint of it; the longest of these is the
+stall.
 `;
 }

@@ -1,5 +1,5 @@
 import { DEFAULT_MAX_BYTES, SplinekitError, SvgDocument, parseSVG } from '../../src/index.js';
-import { primeLiveMarkup } from '../view2d/svg-layer.js';
+import { parsePrimedMarkup, primeLiveMarkup } from '../view2d/svg-layer.js';
 import { contentHash } from './autosave.js';
 import { importFailure } from './import-failure.js';
 import type { ImportReply, ImportRequest } from './import-protocol.js';
@@ -60,8 +60,28 @@ export async function openSVG(bytes: Uint8Array, file: string, hash = contentHas
   } catch (err) {
     throw importFailure(err, file);
   }
-  if (reply.markup !== null) primeLiveMarkup(doc, reply.markup);
-  return { doc, file, importMs: performance.now() - t0, bytes: bytes.length, source: bytes, hash };
+  // The import: the worker's parse, the hand-over and the rebuild here (not the view's work after).
+  const importMs = performance.now() - t0;
+  if (reply.markup !== null) {
+    primeLiveMarkup(doc, reply.markup);
+    // Rebuilding the document, parsing its live markup and showing it are separate tasks, with a
+    // frame between them: a large file keeps the page drawing while it opens.
+    await nextFrame();
+    parsePrimedMarkup(doc);
+    await nextFrame();
+  }
+  return { doc, file, importMs, bytes: bytes.length, source: bytes, hash };
+}
+
+/** Resolves after the next frame (or after 50 ms when the page draws no frames, as in a hidden tab). */
+function nextFrame(): Promise<void> {
+  return new Promise((resolve) => {
+    const fallback = setTimeout(resolve, 50);
+    requestAnimationFrame(() => {
+      clearTimeout(fallback);
+      setTimeout(resolve, 0);
+    });
+  });
 }
 
 /**

@@ -9,6 +9,8 @@ export class LineLayer {
   private xy: Float32Array = new Float32Array(0);
   private rgb: Float32Array = new Float32Array(0);
   private segments = 0;
+  /** Segments by quantized color (for `rgb` and `segments` as they were when grouped). */
+  private groups: { rgb: Float32Array; segments: number; byColor: { style: string; indices: Uint32Array }[] } | null = null;
 
   constructor(
     readonly widthPx: number,
@@ -36,31 +38,53 @@ export class LineLayer {
     if (this.segments === 0) return;
     const { cx, cy, scale, width, height } = view.viewport;
     const ox = width / 2 - cx * scale, oy = height / 2 - cy * scale;
+    const xy = this.xy;
     // One path per color; a segment that starts where the last one of its color ended continues it
     // (so dashes run on along a polyline).
-    const paths = new Map<number, { path: Path2D; x: number; y: number }>();
-    const xy = this.xy, rgb = this.rgb;
-    const q = (v: number) => Math.max(0, Math.min(63, Math.round(v * 63)));
-    for (let s = 0; s < this.segments; s++) {
-      const c = 6 * s;
-      const key = (q((rgb[c] + rgb[c + 3]) / 2) << 12) | (q((rgb[c + 1] + rgb[c + 4]) / 2) << 6) | q((rgb[c + 2] + rgb[c + 5]) / 2);
-      const x0 = xy[4 * s] * scale + ox, y0 = xy[4 * s + 1] * scale + oy, x1 = xy[4 * s + 2] * scale + ox, y1 = xy[4 * s + 3] * scale + oy;
-      let p = paths.get(key);
-      if (!p) paths.set(key, (p = { path: new Path2D(), x: NaN, y: NaN }));
-      if (p.x !== x0 || p.y !== y0) p.path.moveTo(x0, y0);
-      p.path.lineTo(x1, y1);
-      p.x = x1;
-      p.y = y1;
+    const paths: { style: string; path: Path2D }[] = [];
+    for (const { style, indices } of this.colorGroups()) {
+      const path = new Path2D();
+      let x = NaN, y = NaN;
+      for (let n = 0; n < indices.length; n++) {
+        const s = 4 * indices[n];
+        const x0 = xy[s] * scale + ox, y0 = xy[s + 1] * scale + oy, x1 = xy[s + 2] * scale + ox, y1 = xy[s + 3] * scale + oy;
+        if (x !== x0 || y !== y0) path.moveTo(x0, y0);
+        path.lineTo(x1, y1);
+        x = x1;
+        y = y1;
+      }
+      paths.push({ style, path });
     }
     ctx.lineWidth = this.widthPx;
     ctx.lineCap = this.dash ? 'butt' : 'round';
     ctx.lineJoin = 'round';
     ctx.setLineDash(this.dash ? [this.dash.dash, this.dash.gap] : []);
-    for (const [key, { path }] of paths) {
-      const channel = (shift: number) => Math.round((((key >> shift) & 63) / 63) * 255);
-      ctx.strokeStyle = `rgb(${channel(12)}, ${channel(6)}, ${channel(0)})`;
+    for (const { style, path } of paths) {
+      ctx.strokeStyle = style;
       ctx.stroke(path);
     }
+  }
+
+  /** The segments grouped by quantized color, in order within each group (kept while the colors are). */
+  private colorGroups(): { style: string; indices: Uint32Array }[] {
+    const g = this.groups;
+    if (g && g.rgb === this.rgb && g.segments === this.segments) return g.byColor;
+    const rgb = this.rgb;
+    const q = (v: number) => Math.max(0, Math.min(63, Math.round(v * 63)));
+    const byKey = new Map<number, number[]>();
+    for (let s = 0; s < this.segments; s++) {
+      const c = 6 * s;
+      const key = (q((rgb[c] + rgb[c + 3]) / 2) << 12) | (q((rgb[c + 1] + rgb[c + 4]) / 2) << 6) | q((rgb[c + 2] + rgb[c + 5]) / 2);
+      let list = byKey.get(key);
+      if (!list) byKey.set(key, (list = []));
+      list.push(s);
+    }
+    const byColor = [...byKey].map(([key, list]) => {
+      const channel = (shift: number) => Math.round((((key >> shift) & 63) / 63) * 255);
+      return { style: `rgb(${channel(12)}, ${channel(6)}, ${channel(0)})`, indices: Uint32Array.from(list) };
+    });
+    this.groups = { rgb, segments: this.segments, byColor };
+    return byColor;
   }
 }
 

@@ -1,7 +1,7 @@
 import { Group, OrthographicCamera, Scene, WebGLRenderer } from 'three';
 import type { SvgDocument } from '../../src/index.js';
 import { Emitter } from '../app/events.js';
-import { SvgLayer, type DrawingStats } from './svg-layer.js';
+import { SvgLayer, type DrawingStats, type ShowOptions } from './svg-layer.js';
 import { Viewport } from './viewport.js';
 import { FrameScheduler } from '../app/frames.js';
 
@@ -106,11 +106,12 @@ export class View2D {
 
   /**
    * Draws another version of the shown document (e.g. a deformed copy with the same frame),
-   * keeping the view where it is: only the shapes that changed are rewritten.
+   * keeping the view where it is: only the shapes that changed are rewritten. `live` during a
+   * drag or playback (see SvgLayer.show): a show that is not live follows when it ends.
    */
-  showDrawing(doc: SvgDocument): void {
+  showDrawing(doc: SvgDocument, options: ShowOptions = {}): void {
     this.doc = doc;
-    this.rebuild();
+    this.rebuild(options);
   }
 
   /** The document being drawn. */
@@ -119,9 +120,10 @@ export class View2D {
   }
 
   /** Draws the shown document's current splines (after geometry changed). */
-  rebuild(): void {
-    this.events.emit('drawing', this.drawing.show(this.doc, this.viewport));
-    this.requestRender();
+  rebuild(options: ShowOptions = {}): void {
+    // The WebGL canvas holds only overlays, which ask for their own frames when they change: a
+    // frame of it here would redraw and read back an unchanged canvas (software GL) per pose.
+    this.events.emit('drawing', this.drawing.show(this.doc, this.viewport, options));
   }
 
   fit(): void {

@@ -224,19 +224,27 @@ export class MorphMode implements Mode {
    * The in-between at t as a document: a copy of the first one written (same markup, so the view
    * rewrites only the paths' data) with this t's splines; written anew if the structure differs.
    */
+  /** The copy of `inBetween` shown for other t's. */
+  private working: { base: SvgDocument; doc: SvgDocument } | null = null;
+
   private inBetweenAt(m: Morph, t: number): SvgDocument {
     const base = this.inBetween;
     const splines = m.splines(t);
     if (base && base.splines.length === splines.length && base.splines.every((s, i) => s.points.length === splines[i].points.length)) {
-      const doc = base.clone();
+      // One copy of it per morph, its points replaced for every t (not copied per frame).
+      if (this.working?.base !== base) this.working = { base, doc: base.clone() };
+      const doc = this.working.doc;
       doc.splines.forEach((s, i) => s.points.set(splines[i].points));
       return doc;
     }
     return (this.inBetween = m.document(t));
   }
 
-  /** Draws the in-between at the spec's t, the keys, the correspondence and the pins. */
-  private show(): void {
+  /**
+   * Draws the in-between at the spec's t, the keys, the correspondence and the pins; `live` while
+   * the slider is dragged or the morph plays (a still show follows when that ends).
+   */
+  private show(live = false): void {
     const ctx = this.ctx;
     if (!ctx) return;
     const m = this.morph;
@@ -248,7 +256,7 @@ export class MorphMode implements Mode {
       for (let i = 0; i < points.length; i++) sum += points[i] * ((i % 7) + 1);
       this.checksum = sum;
       const doc = this.inBetweenAt(m, this.spec.t);
-      if (this.fitted) ctx.view.showDrawing(doc);
+      if (this.fitted) ctx.view.showDrawing(doc, { live });
       else ctx.view.setDocument(doc);
       this.fitted = true;
     }
@@ -270,7 +278,7 @@ export class MorphMode implements Mode {
 
   private seek(t: number, live: boolean): void {
     this.spec = { ...this.spec, t: Math.min(1, Math.max(0, t)) };
-    this.show();
+    this.show(live);
     if (!live) this.scheduleSave();
   }
 
@@ -304,6 +312,7 @@ export class MorphMode implements Mode {
     this.playing = false;
     cancelAnimationFrame(this.raf);
     this.panel?.setPlaying(false);
+    this.show(); // the still drawing of where it stopped
     this.scheduleSave();
   }
 

@@ -74,11 +74,11 @@ function pickSamples(doc: SvgDocument, perCurve: number, scale: number): Picks {
 
 /**
  * Polylines through the picked samples along each spline (closed splines wrap around), as
- * segments x0 y0 x1 y1 with a color per end.
+ * segments x0 y0 x1 y1 with a color per end (none when `color` is null: see segmentColors).
  */
-function sampleSegments(picks: Picks, at: SampleField, color: (curve: number, sample: number, out: Float32Array, at: number) => void) {
+function sampleSegments(picks: Picks, at: SampleField, color: ((curve: number, sample: number, out: Float32Array, at: number) => void) | null) {
   const { doc, perCurve, total } = picks;
-  const segments = new Float32Array(total * 4), colors = new Float32Array(total * 6);
+  const segments = new Float32Array(total * 4), colors = new Float32Array(color ? total * 6 : 0);
   let seg = 0;
   let xy = new Float32Array(0);
   doc.splines.forEach((s, i) => {
@@ -94,12 +94,32 @@ function sampleSegments(picks: Picks, at: SampleField, color: (curve: number, sa
       segments[4 * seg + 1] = xy[2 * a + 1];
       segments[4 * seg + 2] = xy[2 * b];
       segments[4 * seg + 3] = xy[2 * b + 1];
-      color(Math.floor(line[a] / perCurve), line[a], colors, 6 * seg);
-      color(Math.floor(line[b] / perCurve), line[b], colors, 6 * seg + 3);
+      if (color) {
+        color(Math.floor(line[a] / perCurve), line[a], colors, 6 * seg);
+        color(Math.floor(line[b] / perCurve), line[b], colors, 6 * seg + 3);
+      }
       seg++;
     }
   });
   return { segments, colors };
+}
+
+/** The colors of sampleSegments' segments (6 per segment, in its order), from a color per curve sample. */
+function segmentColors(picks: Picks, color: (curve: number, sample: number, out: Float32Array, at: number) => void): Float32Array {
+  const { doc, perCurve, total } = picks;
+  const colors = new Float32Array(total * 6);
+  let seg = 0;
+  doc.splines.forEach((s, i) => {
+    const line = picks.lines[i], m = line.length;
+    if (m < 2) return;
+    const count = s.closed ? m : m - 1;
+    for (let j = 0; j < count; j++, seg++) {
+      const a = line[j], b = line[(j + 1) % m];
+      color(Math.floor(a / perCurve), a, colors, 6 * seg);
+      color(Math.floor(b / perCurve), b, colors, 6 * seg + 3);
+    }
+  });
+  return colors;
 }
 
 /** Positions on the curves given by `points` (all splines) at the rig's sample parameters (k + ½)/S. */
@@ -161,6 +181,9 @@ export class CurveLayers {
     this.canvas.draw();
   }
 
+  /** The target's segment colors and what they were computed for. */
+  private targetColors: { picks: Picks; heat: Float64Array | null; max: number; colors: Float32Array } | null = null;
+
   /** The samples to draw for `data`'s drawing at the current zoom level (picked again when either changes). */
   private picked: Picks | null = null;
 
@@ -184,14 +207,21 @@ export class CurveLayers {
     // above rounding: a pose fitted exactly (at rest) stays at the minimum color, not noise.
     let max = (1e-6 * data.doc.size) ** 2;
     if (heat) for (const e of heat) if (e > max) max = e;
-    const plain = rgb(SKIN_COLORS.target);
-    const { segments, colors } = sampleSegments(this.picksFor(data), data.target, (curve, _k, out, at) => {
-      // The square root: colors go with the curve's RMS distance, so one bad curve does not
-      // leave all the others at the bottom of the scale.
-      if (heat) HEAT.srgbInto(Math.sqrt(heat[curve] / max), out, at);
-      else out.set(plain, at);
-    });
-    this.target.set(segments, colors);
+    const picks = this.picksFor(data);
+    const { segments } = sampleSegments(picks, data.target, null);
+    // The colors stay while the picks and errors do (a drag shows the errors last measured).
+    const c = this.targetColors;
+    if (!c || c.picks !== picks || c.heat !== heat || c.max !== max) {
+      const plain = rgb(SKIN_COLORS.target);
+      const colors = segmentColors(picks, (curve, _k, out, at) => {
+        // The square root: colors go with the curve's RMS distance, so one bad curve does not
+        // leave all the others at the bottom of the scale.
+        if (heat) HEAT.srgbInto(Math.sqrt(heat[curve] / max), out, at);
+        else out.set(plain, at);
+      });
+      this.targetColors = { picks, heat, max, colors };
+    }
+    this.target.set(segments, this.targetColors!.colors);
   }
 
   private setNaive(data: CurveLayerData | null): void {

@@ -36,6 +36,8 @@ export class SkinView {
   readonly handles: HandlesLayer;
   /** The posed points last drawn (null: the rest drawing; undefined: nothing yet). */
   private shownPoints: Float64Array | null | undefined = undefined;
+  /** The posed drawing shown, written over in place for every pose of the same rig (not copied per frame). */
+  private posed: { rig: object; doc: SvgDocument } | null = null;
 
   constructor(
     private readonly ctx: ModeContext,
@@ -50,9 +52,28 @@ export class SkinView {
     this.handles = new HandlesLayer(ctx.view);
   }
 
+  /** Whether the drawing shown was drawn live (a still draw writes it again exactly). */
+  private shownLive = false;
+
   /** Draws the drawing again on the next draw (another document, control points turned on). */
   invalidate(): void {
     this.shownPoints = undefined;
+  }
+
+  /** The session's document with `points` in its splines: one copy per rig, its points replaced. */
+  private posedDocument(s: SkinSession, points: Float64Array): SvgDocument {
+    const rig = s.rig!.rig;
+    const p = this.posed;
+    if (p?.rig !== rig || p.doc.splines.reduce((n, sp) => n + sp.points.length, 0) !== points.length) {
+      this.posed = { rig, doc: rig.posedDocument(points) };
+      return this.posed.doc;
+    }
+    let at = 0;
+    for (const sp of p.doc.splines) {
+      sp.points.set(points.subarray(at, at + sp.points.length));
+      at += sp.points.length;
+    }
+    return p.doc;
   }
 
   /** The view moved: lines keep their pixel widths, handles their places. */
@@ -71,10 +92,13 @@ export class SkinView {
     }
     const posed = showsPose(st);
     const points = posed ? s.points : null;
-    if (points !== this.shownPoints) {
+    // Live while a handle is dragged or the timeline plays: a still draw follows when it ends.
+    const live = st.gesture !== null || st.playing;
+    if (points !== this.shownPoints || (!live && this.shownLive)) {
       this.shownPoints = points;
-      const shown: SvgDocument = points ? s.rig!.rig.posedDocument(points) : doc;
-      ctx.view.showDrawing(shown);
+      this.shownLive = live;
+      const shown: SvgDocument = points ? this.posedDocument(s, points) : doc;
+      ctx.view.showDrawing(shown, { live });
       // The control points follow the pose when shown (H), moved in place.
       if (ctx.state.overlay) ctx.overlay.update(shown);
     }
