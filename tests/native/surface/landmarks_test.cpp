@@ -55,7 +55,7 @@ std::vector<double> reference_distances(const TriMesh& mesh, int s) {
 struct RefinedReference {
   const TriMesh& mesh;
   const DualGraph& graph;
-  std::vector<Vec3> position;  // #nodes
+  std::vector<Vec3> position;                                // #nodes
   std::vector<std::vector<std::pair<int, int>>> face_nodes;  // per face: (node, edge or -1)
   std::vector<double> d;
 

@@ -27,11 +27,12 @@ export class MeshSessions {
 
   /**
    * @param hooks `leaving` is called before the shown session changes (the previous one is still
-   *   `current`: save what belongs to it), `attached` after (its mesh is in the view).
+   *   `current`: save what belongs to it), `attached` after (its mesh is in the view), `refreshed`
+   *   when the shown mesh's facts change (its search structures built: `mesh.ready`).
    */
   constructor(
     private readonly mode: SurfaceContext,
-    private readonly hooks: { leaving(): void; attached(s: SurfaceSession | null): void },
+    private readonly hooks: { leaving(): void; attached(s: SurfaceSession | null): void; refreshed(): void },
   ) {}
 
   /** The session shown, or null. */
@@ -144,15 +145,24 @@ export class MeshSessions {
     const ctx = this.mode.ctx;
     ctx?.state.setBusy(`Opening ${target.file}…`);
     try {
-      const reply = await this.mode.client.load(target.bytes, target.file);
-      this._generation++;
-      this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh });
-      this._mesh = { info: reply.info, scale: reply.scale, loadMs: reply.ms };
-      if (!this.sessions.has(target.key)) {
-        this.sessions.set(target.key, target);
-        this.restoreDrawing(target, reply.info);
+      // Shown (and attached: edits and traces wait in the worker) once the mesh is built; ready once
+      // its search structures are too.
+      let shown: ShownMeshInfo | null = null;
+      const loaded = await this.mode.client.load(target.bytes, target.file, (reply) => {
+        this._generation++;
+        this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh });
+        shown = this._mesh = { info: reply.info, scale: reply.scale, loadMs: reply.ms, ready: false };
+        if (!this.sessions.has(target.key)) {
+          this.sessions.set(target.key, target);
+          this.restoreDrawing(target, reply.info);
+        }
+        this.attach(target);
+        ctx?.state.setBusy(`Preparing ${target.file} for tracing…`);
+      });
+      if (shown && this._mesh === shown) {
+        this._mesh = { ...(shown as ShownMeshInfo), info: loaded.info, loadMs: loaded.ms, ready: true };
+        this.hooks.refreshed();
       }
-      this.attach(target);
       if (ctx?.state.error?.startsWith(target.file)) ctx.state.setError(null);
       return true;
     } catch (err) {

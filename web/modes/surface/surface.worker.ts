@@ -38,9 +38,14 @@ async function handle(req: SurfaceRequest): Promise<void> {
   }
 }
 
+/**
+ * Loads a mesh: the mesh itself first (posted as 'progress' for the view: the user can look and
+ * orbit), then its search structures (graph, landmarks: about half the build on a large mesh),
+ * before the requests that came after this one.
+ */
 async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void> {
   const t0 = performance.now();
-  const next = await SurfaceMesh.load(new Uint8Array(bytes), name); // throws: the previous mesh stays
+  const next = await SurfaceMesh.load(new Uint8Array(bytes), name, { deferSearch: true }); // throws: the previous mesh stays
   mesh?.dispose();
   mesh = next;
   const P = next.positions, T = next.triangles;
@@ -50,7 +55,7 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   triangles.set(T);
   const bvh = new TriangleBVH(positions, triangles).toArrays();
   const shownNormals = normals.slice();
-  post({ type: 'loaded', id, info: next.info, positions, triangles, normals: shownNormals, bvh, scale: next.scale, ms: performance.now() - t0 }, [
+  post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, bvh, scale: next.scale, ms: performance.now() - t0 }, [
     positions.buffer,
     triangles.buffer,
     shownNormals.buffer,
@@ -58,6 +63,8 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
     bvh.nodes.buffer,
     bvh.order.buffer,
   ]);
+  const info = next.buildSearch();
+  post({ type: 'loaded', id, info, ms: performance.now() - t0 });
 }
 
 function needMesh(): SurfaceMesh {
