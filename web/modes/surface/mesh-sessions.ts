@@ -1,6 +1,7 @@
 import type { MeshInfo } from '../../../src/index.js';
 import { contentHash } from '../../app/autosave.js';
 import { fetchBytes } from '../../app/loader.js';
+import type { Picking } from './client.js';
 import { OpenMeshCommand } from './commands.js';
 import { messageOf, type ShownMeshInfo, type SurfaceContext } from './context.js';
 import { parseSplines } from './drawing.js';
@@ -148,9 +149,13 @@ export class MeshSessions {
       // Shown (and attached: edits and traces wait in the worker) once the mesh is built; ready once
       // its search structures are too.
       let shown: ShownMeshInfo | null = null;
+      let generation = -1;
+      const pickingLater = (reply: Picking) => {
+        if (this._generation === generation) this.mode.view?.setPicking(reply.bvh);
+      };
       const loaded = await this.mode.client.load(target.bytes, target.file, (reply) => {
-        this._generation++;
-        this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh });
+        generation = ++this._generation;
+        this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh ?? 'later' });
         shown = this._mesh = { info: reply.info, scale: reply.scale, loadMs: reply.ms, ready: false };
         if (!this.sessions.has(target.key)) {
           this.sessions.set(target.key, target);
@@ -158,7 +163,7 @@ export class MeshSessions {
         }
         this.attach(target);
         ctx?.state.setBusy(`Preparing ${target.file} for tracing…`);
-      });
+      }, pickingLater);
       if (shown && this._mesh === shown) {
         this._mesh = { ...(shown as ShownMeshInfo), info: loaded.info, loadMs: loaded.ms, ready: true };
         this.hooks.refreshed();

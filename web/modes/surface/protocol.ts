@@ -82,11 +82,13 @@ export type SurfaceReply =
       triangles: Uint32Array;
       /** Smooth vertex normals (area weighted). */
       normals: Float32Array;
-      /** The picking hierarchy, built here so the editor does not have to. */
-      bvh: BVHArrays;
+      /** The picking hierarchy, built here so the editor does not have to (null: in a 'picking' reply next). */
+      bvh: BVHArrays | null;
       scale: number;
       ms: number;
     }
+  /** A large mesh's picking hierarchy, after 'shown'. */
+  | { type: 'progress'; id: number; stage: 'picking'; bvh: BVHArrays }
   /** The load done: info with the search structures; ms from the request to them built. */
   | { type: 'loaded'; id: number; info: MeshInfo; ms: number }
   | { type: 'ran'; id: number; json: SurfaceSplineJSON; trace: TracedPolyline | null; polygon: PolygonPaths | null; traceMs: number; ms: number }
