@@ -353,7 +353,7 @@ export function surfaceSection(s) {
         // Nodes beyond the face nodes and 4 per edge (ShortestPathOptions::steiner) sit on long edges.
         const extra = m.geodesics.graph_nodes - m.geodesics.triangles - 4 * m.geodesics.graph_edges;
         return extra > 0
-          ? `${name(m.file)} (${extra} extra search-graph nodes, ${f(extra / m.geodesics.triangles, 2)} per triangle, on its edges longer than 1% of the diagonal, and so a node offset per edge, 6 bytes per triangle)`
+          ? `${name(m.file)} (${extra} extra search-graph nodes, ${f(extra / m.geodesics.triangles, 2)} per triangle, on its edges longer than 1% of the diagonal)`
           : name(m.file);
       }).join(', ')}`
     : 'every mesh is within it';

@@ -122,7 +122,10 @@ export interface SurfaceMeshHandle extends EmbindObject {
   resizeMesh(vertices: number, faces: number): void;
   positionsIn(): Float64Array;
   trianglesIn(): Int32Array;
-  build(landmarks: number): number;
+  /** Builds the mesh, and its solver unless deferSearch (then buildSearch() or the first call that needs it). */
+  build(landmarks: number, deferSearch: boolean): number;
+  buildSearch(): void;
+  searchBuilt(): boolean;
   /** The mesh report, {name: count} under the names of wasm/core/surface/mesh.h report_fields. */
   reportFields(): Record<string, number>;
   bytes(): number;

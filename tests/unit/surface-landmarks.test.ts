@@ -81,6 +81,42 @@ describe('landmarks', () => {
     }
   });
 
+  test('deferSearch: the mesh first, its search structures on buildSearch() or the first path, the same paths', () => {
+    const eager = SurfaceMesh.fromArrays(positions, triangles);
+    const lazy = SurfaceMesh.fromArrays(positions, triangles, { deferSearch: true });
+    const called = SurfaceMesh.fromArrays(positions, triangles, { deferSearch: true });
+    try {
+      expect(eager.searchBuilt).toBe(true);
+      expect(lazy.searchBuilt).toBe(false);
+      // Before: the mesh alone (no landmarks, no search graph, no search time).
+      expect(lazy.info.landmarks).toBe(0);
+      expect(lazy.info.buildMs.search).toBe(0);
+      const faces = triangles.length / 3;
+      // (the search graph, centroids and landmarks take over 40 bytes per triangle)
+      expect(eager.info.bytes - lazy.info.bytes).toBeGreaterThan(40 * faces);
+      // The first path builds them; info then counts them as the eager mesh does.
+      const a = pointAt(cells, 70.3, 60.2), b = pointAt(cells, 90.6, 55.1);
+      const lazyPath = lazy.shortestPath(a, b);
+      expect(lazy.searchBuilt).toBe(true);
+      expect(lazy.info.landmarks).toBe(8);
+      expect(lazy.info.bytes).toBe(eager.info.bytes);
+      expect(lazy.info.buildMs.search).toBeGreaterThan(0);
+      expect(lazyPath.length).toBe(eager.shortestPath(a, b).length);
+      // buildSearch() does it at once and returns the info; a second call changes nothing.
+      const info = called.buildSearch();
+      expect(called.searchBuilt).toBe(true);
+      expect(info.landmarks).toBe(8);
+      expect(info.bytes).toBe(eager.info.bytes);
+      const ms = info.buildMs.search;
+      expect(called.buildSearch().buildMs.search).toBe(ms);
+      expect(called.shortestPath(a, b).length).toBe(lazyPath.length);
+    } finally {
+      eager.dispose();
+      lazy.dispose();
+      called.dispose();
+    }
+  });
+
   test('a bad landmark count is one clear error', () => {
     for (const landmarks of [-1, 2.5, 65, Number.NaN]) {
       let error: unknown;

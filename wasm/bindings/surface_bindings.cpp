@@ -34,8 +34,10 @@ class SurfaceMeshHandle {
   val positionsIn() { return view_of(positions_in_); }
   val trianglesIn() { return view_of(triangles_in_); }
 
-  // Builds the mesh from positionsIn()/trianglesIn() and its solver with `landmarks` landmarks.
-  int build(int landmarks) {
+  // Builds the mesh from positionsIn()/trianglesIn(), and its solver (search graph, landmarks) with
+  // `landmarks` landmarks unless `defer_search`: then the solver is built by buildSearch(), or by the
+  // first call that needs it (a viewer can show the mesh before the slower search structures exist).
+  int build(int landmarks, bool defer_search) {
     TriMesh mesh;
     std::string error;
     auto start = clock::now();
@@ -46,16 +48,25 @@ class SurfaceMeshHandle {
     solver_.reset();
     mesh_ = std::make_unique<TriMesh>(std::move(mesh));
     build_ms_[0] = elapsed(start);
-    start = clock::now();
-    ShortestPathOptions options;
-    options.landmarks = std::max(0, landmarks);
-    solver_ = std::make_unique<GeodesicSolver>(*mesh_, options);
-    build_ms_[1] = elapsed(start);
-    tracer_ = std::make_unique<CurveTracer>(*solver_);
+    build_ms_[1] = 0;
+    landmarks_ = std::max(0, landmarks);
     std::vector<double>().swap(positions_in_);
     std::vector<int>().swap(triangles_in_);
+    if (!defer_search) buildSearch();
     return kOk;
   }
+  // Builds the solver of the mesh if it is not built yet (see build).
+  void buildSearch() {
+    if (!mesh_ || solver_) return;
+    const auto start = clock::now();
+    ShortestPathOptions options;
+    options.landmarks = landmarks_;
+    solver_ = std::make_unique<GeodesicSolver>(*mesh_, options);
+    tracer_ = std::make_unique<CurveTracer>(*solver_);
+    build_ms_[1] = elapsed(start);
+    solver_bytes_ = solver_->bytes();
+  }
+  bool searchBuilt() const { return solver_ != nullptr; }
 
   // The mesh report as {name: count} under the names of surface::report_fields (src/surface/mesh.ts
   // reads them by name); an empty object before a successful build().
@@ -65,7 +76,8 @@ class SurfaceMeshHandle {
       for (const auto& [name, count] : report_fields(mesh_->report)) out.set(name, count);
     return out;
   }
-  double bytes() const { return mesh_ ? double(mesh_bytes(*mesh_) + solver_->bytes()) : 0; }
+  // Bytes the mesh and its solver held when built (the solver's search records grow with use).
+  double bytes() const { return mesh_ ? double(mesh_bytes(*mesh_) + (solver_ ? solver_bytes_ : 0)) : 0; }
   double scale() const { return mesh_ ? mesh_->scale : 0; }
   int landmarkCount() const { return solver_ ? solver_->landmarks().count() : 0; }
   // Milliseconds of the last build(): 0 the mesh, 1 its solver (search graph and landmarks).
@@ -84,6 +96,7 @@ class SurfaceMeshHandle {
 
   // Shortest path from point 0 to point 1.
   int shortestPath() {
+    buildSearch();  // (deferred by build)
     MeshPoint a, b;
     if (!input(0, a) || !input(1, b)) return kInvalidInput;
     const auto start = clock::now();
@@ -100,6 +113,7 @@ class SurfaceMeshHandle {
 
   // The points at arc-length fractions t0 and t1 of the shortest path from point 0 to point 1.
   int pathAt(double t0, double t1) {
+    buildSearch();  // (deferred by build)
     MeshPoint a, b;
     if (!input(0, a) || !input(1, b)) return kInvalidInput;
     if (!(t0 >= 0 && t0 <= 1 && t1 >= 0 && t1 <= 1)) return fail("path fractions must lie in [0, 1]");
@@ -113,6 +127,7 @@ class SurfaceMeshHandle {
 
   // Straightest geodesic from point 0 in direction (dx, dy, dz) (projected to the tangent plane).
   int straightest(double dx, double dy, double dz, double length) {
+    buildSearch();  // (deferred by build)
     MeshPoint a;
     if (!input(0, a)) return kInvalidInput;
     if (!std::isfinite(dx) || !std::isfinite(dy) || !std::isfinite(dz) || !std::isfinite(length) || length < 0)
@@ -131,6 +146,7 @@ class SurfaceMeshHandle {
   // Traces `curves` cubic curves whose control points are in pointsIn() (4 per curve). Per curve
   // timings in milliseconds come out through curveMilliseconds(i).
   int trace(int curves, int scheme, int levels, double adaptive_degrees) {
+    buildSearch();  // (deferred by build)
     if (curves < 0 || 4 * size_t(curves) * 3 > points_in_.size()) return fail("expected 4 control points per curve");
     TraceOptions options;
     if (!set_options(scheme, levels, adaptive_degrees, options)) return kInvalidInput;
@@ -169,6 +185,7 @@ class SurfaceMeshHandle {
 
   // Point at t of the curve in pointsIn()[0..4).
   int evalCurve(double t, int scheme, int levels, double adaptive_degrees) {
+    buildSearch();  // (deferred by build)
     TraceOptions options;
     ControlPolygon polygon;
     if (!set_options(scheme, levels, adaptive_degrees, options) || !polygon_input(polygon)) return kInvalidInput;
@@ -180,6 +197,7 @@ class SurfaceMeshHandle {
 
   // Point insertion: 7 control points (P0, ., ., Pt, ., ., P3) out.
   int splitCurve(double t, int scheme, int levels, double adaptive_degrees) {
+    buildSearch();  // (deferred by build)
     TraceOptions options;
     ControlPolygon polygon, left, right;
     if (!set_options(scheme, levels, adaptive_degrees, options) || !polygon_input(polygon)) return kInvalidInput;
@@ -193,6 +211,7 @@ class SurfaceMeshHandle {
 
   // ---- Editing: the spline's control points are pointsIn()[0..count); results in pointsOut() ----
   int moveAnchor(int count, int index, double f, double u, double v) {
+    buildSearch();  // (deferred by build)
     MeshPoint to;
     if (!spline_input(count, index) || !point(f, u, v, to)) return kInvalidInput;
     move_anchor(*solver_, spline_, index, to);
@@ -200,6 +219,7 @@ class SurfaceMeshHandle {
     return kOk;
   }
   int moveHandle(int count, int index, double f, double u, double v, bool smooth) {
+    buildSearch();  // (deferred by build)
     MeshPoint to;
     if (!spline_input(count, index) || !point(f, u, v, to)) return kInvalidInput;
     move_handle(*solver_, spline_, index, to, smooth);
@@ -207,12 +227,14 @@ class SurfaceMeshHandle {
     return kOk;
   }
   int smoothAnchor(int count, int index) {
+    buildSearch();  // (deferred by build)
     if (!spline_input(count, index)) return kInvalidInput;
     make_smooth(*solver_, spline_, index);
     output(spline_);
     return kOk;
   }
   int rotateScale(int count, double f, double u, double v, double angle, double scale) {
+    buildSearch();  // (deferred by build)
     MeshPoint c;
     if (!spline_input(count, 0) || !point(f, u, v, c)) return kInvalidInput;
     if (!std::isfinite(angle) || !std::isfinite(scale) || scale < 0)
@@ -222,6 +244,7 @@ class SurfaceMeshHandle {
     return kOk;
   }
   int translateSpline(int count, double f0, double u0, double v0, double f1, double u1, double v1) {
+    buildSearch();  // (deferred by build)
     MeshPoint from, to;
     if (!spline_input(count, 0) || !point(f0, u0, v0, from) || !point(f1, u1, v1, to)) return kInvalidInput;
     translate(*solver_, spline_, from, to);
@@ -230,6 +253,7 @@ class SurfaceMeshHandle {
   }
   // Maps xyIn() (2D, y down) about the point (f, u, v).
   int mapPoints(double f, double u, double v, double ux, double uy, double uz, double rotation, double scale) {
+    buildSearch();  // (deferred by build)
     MeshPoint c;
     if (!point(f, u, v, c)) return kInvalidInput;
     if (!std::isfinite(rotation) || !std::isfinite(scale) || !(scale > 0))
@@ -327,6 +351,8 @@ class SurfaceMeshHandle {
 
   std::unique_ptr<TriMesh> mesh_;
   std::unique_ptr<GeodesicSolver> solver_;
+  int landmarks_ = 0;
+  size_t solver_bytes_ = 0;
   std::unique_ptr<CurveTracer> tracer_;
   std::vector<double> positions_in_;
   std::vector<int> triangles_in_;
@@ -354,6 +380,8 @@ EMSCRIPTEN_BINDINGS(splinekit_surface) {
       .function("bytes", &SurfaceMeshHandle::bytes)
       .function("scale", &SurfaceMeshHandle::scale)
       .function("landmarkCount", &SurfaceMeshHandle::landmarkCount)
+      .function("buildSearch", &SurfaceMeshHandle::buildSearch)
+      .function("searchBuilt", &SurfaceMeshHandle::searchBuilt)
       .function("buildMilliseconds", &SurfaceMeshHandle::buildMilliseconds)
       .function("resizePoints", &SurfaceMeshHandle::resizePoints)
       .function("pointsIn", &SurfaceMeshHandle::pointsIn)

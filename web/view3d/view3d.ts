@@ -103,6 +103,8 @@ export class View3D {
   private meshObject: Mesh | null = null;
   private shown: ShownMesh | null = null;
   private bvh: TriangleBVH | null = null;
+  /** The picking hierarchy comes later (setPicking). */
+  private pickingLater = false;
   private readonly frames = new FrameScheduler((time) => {
     this.events.emit('prerender', time);
     this.render();
@@ -178,7 +180,7 @@ export class View3D {
    * Shows a mesh (positions xyz, triangles in file order). Smooth normals and the picking
    * hierarchy are computed unless given (a worker can make them). `fit` frames the mesh.
    */
-  setMesh(positions: Float32Array, triangles: Uint32Array, options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays } = {}): ShownMesh {
+  setMesh(positions: Float32Array, triangles: Uint32Array, options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays | 'later' } = {}): ShownMesh {
     const fit = options.fit ?? true;
     this.clearMesh();
     const geometry = new BufferGeometry();
@@ -193,7 +195,9 @@ export class View3D {
     this.meshObject = new Mesh(geometry, this.material);
     this.meshObject.name = 'surface-mesh';
     this.scene.add(this.meshObject);
-    this.bvh = new TriangleBVH(positions, triangles, options.bvh);
+    // 'later': a worker sends it (setPicking); until then nothing is picked and everything is seen.
+    this.pickingLater = options.bvh === 'later';
+    this.bvh = this.pickingLater ? null : new TriangleBVH(positions, triangles, options.bvh === 'later' ? undefined : options.bvh);
     this.shown = {
       positions,
       triangles,
@@ -208,6 +212,13 @@ export class View3D {
     if (fit) this.fit();
     this.requestRender();
     return this.shown;
+  }
+
+  /** The picking hierarchy of the shown mesh, when setMesh was told it comes later. */
+  setPicking(bvh: BVHArrays): void {
+    if (!this.shown || !this.pickingLater) return;
+    this.bvh = new TriangleBVH(this.shown.positions, this.shown.triangles, bvh);
+    this.pickingLater = false;
   }
 
   /** The shown mesh's geometry (for a mode that deforms it or colours its vertices), or null. */
@@ -236,6 +247,7 @@ export class View3D {
     this.meshObject = null;
     this.shown = null;
     this.bvh = null;
+    this.pickingLater = false;
     this.requestRender();
   }
 
@@ -302,7 +314,7 @@ export class View3D {
 
   /** The mesh point under a canvas point (nearest hit, either side), with the hit's position. */
   pick(sx: number, sy: number): (RayHit & { point: Vector3 }) | null {
-    if (!this.shown) return null;
+    if (!this.shown || this.pickingLater) return null;
     this.bvh ??= new TriangleBVH(this.shown.positions, this.shown.triangles);
     const { origin, dir } = this.ray(sx, sy);
     const hit = this.bvh.raycast(origin.x, origin.y, origin.z, dir.x, dir.y, dir.z);
@@ -314,7 +326,7 @@ export class View3D {
    * the camera, up to `slack` (world units) in front of it.
    */
   isVisible(x: number, y: number, z: number, slack: number): boolean {
-    if (!this.shown) return true;
+    if (!this.shown || this.pickingLater) return true;
     this.bvh ??= new TriangleBVH(this.shown.positions, this.shown.triangles);
     const origin = this.camera.position;
     const dir = new Vector3(x, y, z).sub(origin);

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -187,6 +189,61 @@ TEST(SearchGraph, NumbersEveryEdgeOnceFromBothSides) {
       EXPECT_EQ(seen[e], mesh.adjacency[graph.edge_halfedge[e] / 3][graph.edge_halfedge[e] % 3] < 0 ? 1 : 2)
           << "edge " << e;
   }
+}
+
+TEST(SearchGraph, GivesLongEdgesTheirNodesAndNumbersThemInOrder) {
+  // A grid of cells 1/12 wide (jittered) and a long-edge fraction of 1/30 of its diagonal: sides
+  // are about 1.8 such lengths, diagonals 2.5, so with one Steiner node per edge the diagonals (and
+  // some sides) get more, with four none do; only the long edges are listed, and the numbering is
+  // contiguous: edge e's nodes follow edge e - 1's, and edge_of_node inverts it.
+  const TriMesh mesh = testing::build(testing::planar_grid(12, 1, 0.25));
+  for (int steiner : {1, 2, 4}) {
+    ShortestPathOptions options;
+    options.steiner = steiner;
+    options.long_edge_fraction = 1.0 / 30;
+    GeodesicSolver solver(mesh, options);
+    const DualGraph& graph = solver.graph();
+    int expected_node = graph.faces, long_count = 0;
+    for (int e = 0; e < graph.edges; ++e) {
+      const int h = graph.edge_halfedge[e];
+      const auto& t = mesh.triangles[h / 3];
+      const double len = (mesh.positions[t[(h % 3 + 1) % 3]] - mesh.positions[t[h % 3]]).norm();
+      const int extra = len > graph.long_edge ? static_cast<int>(std::ceil(len / graph.long_edge)) - 1 : 0;
+      const int count = std::max(steiner, extra);
+      long_count += count > steiner;
+      ASSERT_EQ(graph.first_node(e), expected_node) << "edge " << e;
+      ASSERT_EQ(graph.end_node(e) - graph.first_node(e), count) << "edge " << e;
+      for (int n = graph.first_node(e); n < graph.end_node(e); ++n) ASSERT_EQ(graph.edge_of_node(n), e);
+      expected_node += count;
+    }
+    EXPECT_EQ(graph.nodes(), expected_node);
+    EXPECT_EQ(static_cast<int>(graph.long_edges.size()), long_count);
+    if (steiner == 4) EXPECT_EQ(long_count, 0);
+    if (steiner == 1) EXPECT_GT(long_count, graph.edges / 3);
+  }
+}
+
+TEST(SearchGraph, ALongEdgeCostsItsNodesNotAnOffsetPerEdge) {
+  // The memory of issue 17 (<= ~120 bytes per triangle with the landmarks): a 25,600-triangle coil
+  // (landmarks on) with one edge made long by moving a vertex far out, against the same coil as
+  // built: the long edge adds a few bytes, not an offset for every edge.
+  testing::Arrays a = testing::coil(800, 16);
+  const TriMesh plain = testing::build(a);
+  // A vertex on the first ring pulled out along x (its edges get long: beyond 1% of the diagonal).
+  a.positions[0] += 2.0;
+  const TriMesh stretched = testing::build(a);
+  ShortestPathOptions options;
+  options.landmark_min_faces = 0;
+  GeodesicSolver p(plain, options), q(stretched, options);
+  ASSERT_EQ(p.landmarks().count(), 8);
+  EXPECT_TRUE(p.graph().long_edges.empty());
+  ASSERT_FALSE(q.graph().long_edges.empty());
+  const double faces = static_cast<double>(plain.triangles.size());
+  const double per_triangle = (mesh_bytes(plain) + p.bytes()) / faces;
+  const double stretched_per_triangle = (mesh_bytes(stretched) + q.bytes()) / faces;
+  EXPECT_LE(per_triangle, 120) << per_triangle;
+  EXPECT_LE(stretched_per_triangle, 120) << stretched_per_triangle;
+  EXPECT_LT(stretched_per_triangle - per_triangle, 0.1) << per_triangle << " vs " << stretched_per_triangle;
 }
 
 TEST(ShortestPath, IsTheStraightSegmentOnAPlane) {

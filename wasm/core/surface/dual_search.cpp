@@ -29,8 +29,21 @@ void faces_of_point(const TriMesh& mesh, const MeshPoint& p, std::vector<int>& f
 
 int DualGraph::edge_of_node(int node) const {
   const int local = node - faces;
-  if (edge_offsets.empty()) return local / steiner;
-  return static_cast<int>(std::upper_bound(edge_offsets.begin(), edge_offsets.end(), local) - edge_offsets.begin()) - 1;
+  if (long_edges.empty()) return local / steiner;
+  // The last long edge whose nodes start at or before `local` (long edge i starts at
+  // long_edges[i]·steiner + long_extra[i]), then the ordinary edges after it.
+  int lo = 0, hi = static_cast<int>(long_edges.size());
+  while (lo < hi) {
+    const int mid = (lo + hi) / 2;
+    if (long_edges[mid] * steiner + long_extra[mid] <= local)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  if (lo == 0) return local / steiner;
+  const int i = lo - 1, first = long_edges[i] * steiner + long_extra[i];
+  const int end = first + steiner + long_extra[i + 1] - long_extra[i];
+  return local < end ? long_edges[i] : long_edges[i] + 1 + (local - end) / steiner;
 }
 
 DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
@@ -43,8 +56,6 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
   graph_.steiner = std::max(1, options.steiner);
   graph_.long_edge = options.long_edge_fraction * mesh.scale;
   graph_.halfedge_edge.assign(3 * static_cast<size_t>(nf), -1);
-  std::vector<int> counts;
-  bool uniform = true;
   for (int f = 0; f < nf; ++f) {
     const auto& t = mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {
@@ -57,15 +68,16 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
       graph_.edge_halfedge.push_back(3 * f + k);
       const double len = (mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]).norm();
       const int extra = len > graph_.long_edge ? static_cast<int>(std::ceil(len / graph_.long_edge)) - 1 : 0;
-      counts.push_back(std::max(graph_.steiner, extra));
-      uniform = uniform && counts.back() == graph_.steiner;
+      if (extra > graph_.steiner) {
+        if (graph_.long_extra.empty()) graph_.long_extra.push_back(0);
+        graph_.long_edges.push_back(static_cast<int>(graph_.edge_halfedge.size()) - 1);
+        graph_.long_extra.push_back(graph_.long_extra.back() + extra - graph_.steiner);
+      }
     }
   }
   graph_.edges = static_cast<int>(graph_.edge_halfedge.size());
-  if (!uniform) {
-    graph_.edge_offsets.assign(1, 0);
-    for (int c : counts) graph_.edge_offsets.push_back(graph_.edge_offsets.back() + c);
-  }
+  graph_.long_edges.shrink_to_fit();
+  graph_.long_extra.shrink_to_fit();
   face_slot_.assign(nf, -1);
   edge_slot_.assign(graph_.edges, -1);
   centroids_.resize(nf);
@@ -77,7 +89,8 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
 }
 
 size_t DualSearch::bytes() const {
-  return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.edge_offsets.capacity()) *
+  return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.long_edges.capacity() +
+          graph_.long_extra.capacity()) *
              sizeof(int) +
          (face_slot_.capacity() + edge_slot_.capacity()) * sizeof(int) + visits_.capacity() * sizeof(Visit) +
          centroids_.capacity() * sizeof(centroids_[0]) + landmarks_.bytes();
@@ -118,6 +131,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
                                SearchGraph graph) {
   const bool dual = graph == SearchGraph::kDual;
   strip.clear();
+  last_length_ = std::numeric_limits<double>::infinity();
   const int nf = graph_.faces;
   std::vector<int>& sources = sources_;
   std::vector<int>& targets = targets_;
@@ -126,6 +140,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   for (int s : sources) {
     if (std::find(targets.begin(), targets.end(), s) != targets.end()) {
       strip.push_back(s);
+      last_length_ = 0;
       return true;
     }
   }
@@ -247,6 +262,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
     }
   }
   if (stats) ++stats->searches, stats->visited_nodes += visited;
+  if (best_face >= 0) last_length_ = best;
 
   auto parent = [&](int node) { return visits_[slot(node)].parent; };
   if (best_face >= 0) {

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <vector>
 
 namespace splinekit::surface {
@@ -31,15 +32,30 @@ struct DualGraph {
   double long_edge = 0;            // edges longer than this get one node per such length
   std::vector<int> halfedge_edge;  // #3F: undirected edge of half-edge (f, k)
   std::vector<int> edge_halfedge;  // #E: one half-edge (3f + k) of each edge
-  std::vector<int> edge_offsets;   // #E+1: first node of each edge after the F face nodes
-                                   // (empty when every edge has `steiner` nodes)
+  // The edges with more than `steiner` nodes, ascending, and the prefix sums of their extra nodes
+  // (#long + 1; both empty when there are none). Few on most meshes, so kept sparse: until
+  // 2026-12-02 a node offset per edge (6 bytes per triangle) was stored as soon as one edge was long.
+  std::vector<int> long_edges, long_extra;
   // Number of nodes: F face nodes, then the edge nodes edge by edge.
-  int nodes() const { return faces + (edge_offsets.empty() ? edges * steiner : edge_offsets.back()); }
+  int nodes() const { return faces + edges * steiner + (long_extra.empty() ? 0 : long_extra.back()); }
   // The nodes of edge e are [first_node(e), end_node(e)).
-  int first_node(int e) const { return faces + (edge_offsets.empty() ? e * steiner : edge_offsets[e]); }
-  int end_node(int e) const { return faces + (edge_offsets.empty() ? (e + 1) * steiner : edge_offsets[e + 1]); }
+  int first_node(int e) const {
+    return long_edges.empty() ? faces + e * steiner : faces + e * steiner + long_extra[long_before(e)];
+  }
+  int end_node(int e) const {
+    if (long_edges.empty()) return faces + (e + 1) * steiner;
+    const int i = long_before(e);
+    const bool is_long = i < static_cast<int>(long_edges.size()) && long_edges[i] == e;
+    return faces + (e + 1) * steiner + long_extra[i + (is_long ? 1 : 0)];
+  }
   // The edge an edge node lies on (node >= faces).
   int edge_of_node(int node) const;
+
+ private:
+  // How many long edges come before edge e (the index of the first long edge >= e).
+  int long_before(int e) const {
+    return static_cast<int>(std::lower_bound(long_edges.begin(), long_edges.end(), e) - long_edges.begin());
+  }
 };
 
 // The graph of a mesh and the search over it, with its scratch reused between queries.
@@ -62,6 +78,10 @@ class DualSearch {
   // (strip empty) when b cannot be reached. Adds the nodes it expanded to stats->visited_nodes.
   bool initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats = nullptr,
                      SearchGraph graph = SearchGraph::kRefined);
+  // The search-graph length of the last initial_strip's path, from a to b (the A* distance, weighted
+  // as its Euclidean term in the kDual search; infinity when b was not reached, 0 when a and b share
+  // a face).
+  double last_length() const { return last_length_; }
   // A table of #nodes (>= #F) entries, -1 everywhere between calls: the search's, lent to
   // remove_loops and the straightening between searches (per-face marks) so the mesh pays for one.
   std::vector<int>& face_marks() { return face_slot_; }
@@ -100,6 +120,7 @@ class DualSearch {
   std::vector<Visit> visits_;
   std::vector<Entry> heap_;
   std::vector<int> sources_, targets_;  // faces holding a and b
+  double last_length_ = 0;
   // Face centroids in single precision (the face nodes' positions: one read instead of four).
   std::vector<Eigen::Vector3f> centroids_;
   // Dual-graph distances from a few landmark faces (empty on small meshes).

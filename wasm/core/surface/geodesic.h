@@ -48,6 +48,8 @@ class GeodesicSolver {
                      SearchGraph graph = SearchGraph::kRefined) {
     return search_.initial_strip(a, b, strip, stats, graph);
   }
+  // The search-graph length of the last initial_strip's (or searched shortest_path's) path.
+  double last_search_length() const { return search_.last_length(); }
   // Phases (ii)+(iii) on a given strip (consecutive faces adjacent; a on strip.front(), b on
   // strip.back()); `strip` becomes the straightened path's.
   void straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,

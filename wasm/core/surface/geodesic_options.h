@@ -27,7 +27,17 @@ struct ShortestPathOptions {
   // dual-graph distances overestimate the refined graph's (by up to a third on the coil of the
   // benchmarks), so no scale is both admissible and useful: 0 (the default) leaves the refined search
   // exact; 0.85 makes it ~40 times cheaper on that coil but only 90% of nefertiti's paths stay within
-  // 0.5% of the exact distance (BENCHMARKS.md, "Surface at scale").
+  // 0.5% of the exact distance (BENCHMARKS.md, "Surface at scale"). Also tried for the refined
+  // search (2026-12-02, on the 384k-triangle coil): landmark distances on a "collapsed" refined graph
+  // (one node per edge for its Steiner nodes, links the nearest node pairs: never longer than the
+  // refined graph, so admissible) bound only ~0.4 of the distance and expanded as many nodes; on the
+  // refined graph itself (exact, consistent only up to moving the face's value to the node) the
+  // precompute took 1.2 s for 8 landmarks on a 25.6k-triangle coil, and the A* had to reopen nodes
+  // to stay exact (more expansions than without);
+  // a vertex potential made 1-Lipschitz per face by lowering vertices does not converge (lowering one
+  // face's vertex steepens its neighbours'); a corridor around the dual graph's shortest path misses
+  // the geodesic on grid-like meshes (dual shortest paths wander across a band of equal-length
+  // staircases), giving longer paths.
   int landmarks = 8;                  // landmarks per mesh (2 bytes per face each); 0: none
   int landmark_min_faces = 16384;     // smaller meshes search fast enough on the Euclidean term
   double landmark_weight = 3;         // kDual (as dual_heuristic_weight: a greedy search)

@@ -12,6 +12,8 @@ export class SupersededError extends Error {
 }
 
 export type Loaded = Extract<SurfaceReply, { type: 'loaded' }>;
+export type Shown = Extract<SurfaceReply, { type: 'progress'; stage: 'shown' }>;
+export type Picking = Extract<SurfaceReply, { type: 'progress'; stage: 'picking' }>;
 export type Ran = Extract<SurfaceReply, { type: 'ran' }>;
 export type Mapped = Extract<SurfaceReply, { type: 'mapped' }>;
 export type PathReply = Extract<SurfaceReply, { type: 'path' }>;
@@ -48,10 +50,19 @@ export class SurfaceClient {
   /** @param work where the requests under way are counted (the mode's in-flight tracker). */
   constructor(private readonly work: InFlight) {}
 
-  /** Loads a mesh (the previous one stays if this fails). */
-  load(bytes: Uint8Array, name: string): Promise<Loaded> {
+  /**
+   * Loads a mesh (the previous one stays if this fails): `shown` gets the mesh to draw as soon as it
+   * is built, `picking` its picking hierarchy when that came later (large meshes), and the promise
+   * settles once its search structures are built too.
+   */
+  load(bytes: Uint8Array, name: string, shown: (reply: Shown) => void, picking: (reply: Picking) => void): Promise<Loaded> {
     const copy = bytes.slice().buffer; // the caller keeps its bytes (undo reloads them)
-    return this.send({ type: 'load', bytes: copy, name }, [copy]) as Promise<Loaded>;
+    const progress = (reply: SurfaceReply) => {
+      if (reply.type !== 'progress') return;
+      if (reply.stage === 'shown') shown(reply);
+      else picking(reply);
+    };
+    return this.work.track(this.worker.request({ type: 'load', bytes: copy, name }, [copy], progress)) as Promise<Loaded>;
   }
 
   /** Runs edits on a spline and traces the result; coalesced per `lane` when given. */

@@ -14,8 +14,10 @@ export interface ShownMeshInfo {
   info: MeshInfo;
   /** Bounding-box diagonal. */
   scale: number;
-  /** Milliseconds to load and precompute it (in the worker). */
+  /** Milliseconds to load it (in the worker): to shown, then to ready. */
   loadMs: number;
+  /** Its search structures are built (before, traces wait for them in the worker). */
+  ready: boolean;
 }
 
 /**

@@ -1,6 +1,7 @@
 import type { MeshInfo } from '../../../src/index.js';
 import { contentHash } from '../../app/autosave.js';
 import { fetchBytes } from '../../app/loader.js';
+import type { Picking } from './client.js';
 import { OpenMeshCommand } from './commands.js';
 import { messageOf, type ShownMeshInfo, type SurfaceContext } from './context.js';
 import { parseSplines } from './drawing.js';
@@ -27,11 +28,12 @@ export class MeshSessions {
 
   /**
    * @param hooks `leaving` is called before the shown session changes (the previous one is still
-   *   `current`: save what belongs to it), `attached` after (its mesh is in the view).
+   *   `current`: save what belongs to it), `attached` after (its mesh is in the view), `refreshed`
+   *   when the shown mesh's facts change (its search structures built: `mesh.ready`).
    */
   constructor(
     private readonly mode: SurfaceContext,
-    private readonly hooks: { leaving(): void; attached(s: SurfaceSession | null): void },
+    private readonly hooks: { leaving(): void; attached(s: SurfaceSession | null): void; refreshed(): void },
   ) {}
 
   /** The session shown, or null. */
@@ -144,15 +146,28 @@ export class MeshSessions {
     const ctx = this.mode.ctx;
     ctx?.state.setBusy(`Opening ${target.file}…`);
     try {
-      const reply = await this.mode.client.load(target.bytes, target.file);
-      this._generation++;
-      this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh });
-      this._mesh = { info: reply.info, scale: reply.scale, loadMs: reply.ms };
-      if (!this.sessions.has(target.key)) {
-        this.sessions.set(target.key, target);
-        this.restoreDrawing(target, reply.info);
+      // Shown (and attached: edits and traces wait in the worker) once the mesh is built; ready once
+      // its search structures are too.
+      let shown: ShownMeshInfo | null = null;
+      let generation = -1;
+      const pickingLater = (reply: Picking) => {
+        if (this._generation === generation) this.mode.view?.setPicking(reply.bvh);
+      };
+      const loaded = await this.mode.client.load(target.bytes, target.file, (reply) => {
+        generation = ++this._generation;
+        this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh ?? 'later' });
+        shown = this._mesh = { info: reply.info, scale: reply.scale, loadMs: reply.ms, ready: false };
+        if (!this.sessions.has(target.key)) {
+          this.sessions.set(target.key, target);
+          this.restoreDrawing(target, reply.info);
+        }
+        this.attach(target);
+        ctx?.state.setBusy(`Preparing ${target.file} for tracing…`);
+      }, pickingLater);
+      if (shown && this._mesh === shown) {
+        this._mesh = { ...(shown as ShownMeshInfo), info: loaded.info, loadMs: loaded.ms, ready: true };
+        this.hooks.refreshed();
       }
-      this.attach(target);
       if (ctx?.state.error?.startsWith(target.file)) ctx.state.setError(null);
       return true;
     } catch (err) {

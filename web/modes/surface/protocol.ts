@@ -69,18 +69,28 @@ export type SurfaceRequest =
 
 export type SurfaceReply =
   | {
-      type: 'loaded';
+      /**
+       * A 'load' request's first reply: the mesh as built, to show while the worker builds its
+       * search structures (requests after the load wait for those); then 'loaded'.
+       */
+      type: 'progress';
       id: number;
+      stage: 'shown';
+      /** Without the search structures (bytes, landmarks: see 'loaded'). */
       info: MeshInfo;
       positions: Float32Array;
       triangles: Uint32Array;
       /** Smooth vertex normals (area weighted). */
       normals: Float32Array;
-      /** The picking hierarchy, built here so the editor does not have to. */
-      bvh: BVHArrays;
+      /** The picking hierarchy, built here so the editor does not have to (null: in a 'picking' reply next). */
+      bvh: BVHArrays | null;
       scale: number;
       ms: number;
     }
+  /** A large mesh's picking hierarchy, after 'shown'. */
+  | { type: 'progress'; id: number; stage: 'picking'; bvh: BVHArrays }
+  /** The load done: info with the search structures; ms from the request to them built. */
+  | { type: 'loaded'; id: number; info: MeshInfo; ms: number }
   | { type: 'ran'; id: number; json: SurfaceSplineJSON; trace: TracedPolyline | null; polygon: PolygonPaths | null; traceMs: number; ms: number }
   | { type: 'path'; id: number; lifted: Float32Array; length: number }
   | { type: 'mapped'; id: number; splines: SurfaceSplineJSON[]; ms: number }

@@ -64,7 +64,7 @@ export class SurfaceMode implements Mode, SurfaceContext {
   private _prefs: SurfacePrefs = loadPrefs();
   private _tool: SurfaceTool = 'draw';
   private _selection: SurfaceSelection | null = null;
-  private readonly sessions = new MeshSessions(this, { leaving: () => this.leaving(), attached: (s) => this.attached(s) });
+  private readonly sessions = new MeshSessions(this, { leaving: () => this.leaving(), attached: (s) => this.attached(s), refreshed: () => this.refreshPanel() });
   private readonly traces = new TraceCache(this);
   private readonly picking = new SurfacePicking(this, this.traces);
   private readonly edits = new SurfaceEdits(this, this.traces);
@@ -520,6 +520,7 @@ export class SurfaceMode implements Mode, SurfaceContext {
       active: this.active,
       file: this.session?.file ?? null,
       info: this.mesh?.info ?? null,
+      ready: this.mesh?.ready ?? false,
       scale: this.mesh?.scale ?? null,
       drawing: this.drawing,
       traceOf: (sp) => this.traces.traceOf(sp),

@@ -20,7 +20,7 @@ export class SurfaceStatus {
   /** Shows the mesh of file `file` (null: none) and the last trace. */
   show(file: string | null, m: ShownMeshInfo | null, t: TraceReport | null): void {
     this.mesh.textContent = file && m ? `${file} · ${m.info.faces.toLocaleString('en-US')} triangles` : 'No mesh';
-    this.mesh.title = file && m ? `${file}: ${m.info.faces} triangles, ${m.info.usedVertices} vertices, loaded and precomputed in ${m.loadMs.toFixed(0)} ms` : '';
+    this.mesh.title = file && m ? `${file}: ${m.info.faces} triangles, ${m.info.usedVertices} vertices, ${m.ready ? `loaded and precomputed in ${m.loadMs.toFixed(0)} ms` : `shown after ${m.loadMs.toFixed(0)} ms, preparing its search structures`}` : '';
     const w = m?.info.warnings ?? [];
     this.warnings.textContent = w.length === 0 ? (m ? 'no warnings' : '') : w.length === 1 ? w[0] : `${w.length} warnings: ${w[0]}…`;
     this.warnings.title = w.join('\n');

@@ -6,7 +6,7 @@
  */
 import { SurfaceMesh, SurfaceSpline, init, mapSplines, meshPointNormal, parseSVG, vertexNormals, type MeshPoint, type SurfaceSplineJSON } from '../../../src/index.js';
 import { serveRequests } from '../../app/worker-host.js';
-import { TriangleBVH } from '../../view3d/bvh.js';
+import { TriangleBVH, type BVHArrays } from '../../view3d/bvh.js';
 import type { PolygonPaths, SplineOp, SurfaceReply, SurfaceRequest, TracedPolyline } from './protocol.js';
 
 /**
@@ -38,9 +38,18 @@ async function handle(req: SurfaceRequest): Promise<void> {
   }
 }
 
+/** Meshes of more faces get their picking hierarchy after they are shown (it takes seconds at 2M). */
+const PICKING_LATER_FACES = 250_000;
+
+/**
+ * Loads a mesh: the mesh itself first (posted as 'progress' for the view: the user can look and
+ * orbit), then on large meshes its picking hierarchy (another 'progress'), then its search
+ * structures (graph, landmarks: the larger part of the build on a large mesh), before the requests
+ * that came after this one.
+ */
 async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void> {
   const t0 = performance.now();
-  const next = await SurfaceMesh.load(new Uint8Array(bytes), name); // throws: the previous mesh stays
+  const next = await SurfaceMesh.load(new Uint8Array(bytes), name, { deferSearch: true }); // throws: the previous mesh stays
   mesh?.dispose();
   mesh = next;
   const P = next.positions, T = next.triangles;
@@ -48,16 +57,24 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   lift = LIFT * next.scale;
   const positions = Float32Array.from(P), triangles = new Uint32Array(T.length);
   triangles.set(T);
-  const bvh = new TriangleBVH(positions, triangles).toArrays();
+  const later = T.length / 3 > PICKING_LATER_FACES;
+  const bvhArrays = (bvh: BVHArrays) => [bvh.bounds.buffer, bvh.nodes.buffer, bvh.order.buffer];
+  // (later: the hierarchy is built on copies, the arrays shown are handed over at once)
+  const kept = later ? { positions: positions.slice(), triangles: triangles.slice() } : null;
+  const bvh = later ? null : new TriangleBVH(positions, triangles).toArrays();
   const shownNormals = normals.slice();
-  post({ type: 'loaded', id, info: next.info, positions, triangles, normals: shownNormals, bvh, scale: next.scale, ms: performance.now() - t0 }, [
+  post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, bvh, scale: next.scale, ms: performance.now() - t0 }, [
     positions.buffer,
     triangles.buffer,
     shownNormals.buffer,
-    bvh.bounds.buffer,
-    bvh.nodes.buffer,
-    bvh.order.buffer,
+    ...(bvh ? bvhArrays(bvh) : []),
   ]);
+  if (kept) {
+    const picking = new TriangleBVH(kept.positions, kept.triangles).toArrays();
+    post({ type: 'progress', stage: 'picking', id, bvh: picking }, bvhArrays(picking));
+  }
+  const info = next.buildSearch();
+  post({ type: 'loaded', id, info, ms: performance.now() - t0 });
 }
 
 function needMesh(): SurfaceMesh {

@@ -20,6 +20,8 @@ export interface SurfaceTestState {
   active: boolean;
   file: string | null;
   meshInfo: MeshInfo | null;
+  /** The mesh's search structures are built (it is shown, and traced, before: traces wait for them). */
+  meshReady: boolean;
   /** Bounding-box diagonal of the mesh. */
   scale: number | null;
   splines: SurfaceTestSpline[];
@@ -39,6 +41,7 @@ export function surfaceTestState(s: {
   active: boolean;
   file: string | null;
   info: MeshInfo | null;
+  ready: boolean;
   scale: number | null;
   drawing: SurfaceDrawing;
   traceOf(sp: DrawnSpline): TracedPolyline | null;
@@ -55,6 +58,7 @@ export function surfaceTestState(s: {
     active: s.active,
     file: s.file,
     meshInfo: s.info,
+    meshReady: s.ready,
     scale: s.scale,
     splines: s.drawing.splines.map((sp) => {
       const t = s.traceOf(sp);
