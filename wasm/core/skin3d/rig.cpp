@@ -115,7 +115,7 @@ std::string SubdivisionRig::precompute() {
       g[4 * i] = dw * p[0], g[4 * i + 1] = dw * p[1], g[4 * i + 2] = dw * p[2], g[4 * i + 3] = dw;
     }
   });
-  Eigen::SparseMatrix<double> A = subdivision_.gram(D);
+  Eigen::SparseMatrix<double> A = subdivision_.gram_lower(D);  // the factorization reads the lower triangle
 
   // M can be rank-deficient: on the cube (every vertex of valence 3) the checkerboard ±1 of the
   // cage vertices subdivides to 0. A small pull of each cage vertex toward its own blend,

@@ -205,6 +205,7 @@ void limit_stencils(const PolyMesh& p, RowSparse& L) {
 
 void Subdivision::build(const PolyMesh& cage, int levels, bool final_topology) {
   cage_vertices_ = cage.vertex_count;
+  cage_face_start_ = cage.face_start;
   steps_.assign(size_t(levels), RowSparse());
   scratch_.clear();
   PolyMesh current = cage, next;
@@ -232,17 +233,56 @@ void Subdivision::apply(const double* cage, int cols, double* refined) {
   }
 }
 
+namespace {
+
+// y += Sᵀ x for row-major x (S.rows() by cols) and y (S.cols() by cols): each stored entry of S adds
+// one contiguous row of x to one of y.
+void add_transpose_times(const RowSparse& S, const double* x, int cols, double* y) {
+  const int* outer = S.outerIndexPtr();
+  const int* inner = S.innerIndexPtr();
+  const double* value = S.valuePtr();
+  for (Eigen::Index r = 0; r < S.rows(); ++r) {
+    const double* xr = x + size_t(r) * size_t(cols);
+    for (int k = outer[r]; k < outer[r + 1]; ++k) {
+      double* yc = y + size_t(inner[k]) * size_t(cols);
+      const double s = value[k];
+      for (int c = 0; c < cols; ++c) yc[c] += s * xr[c];
+    }
+  }
+}
+
+}  // namespace
+
 Eigen::MatrixXd Subdivision::apply_transpose(int cols, const std::function<void(int, double*)>& row) const {
   const RowSparse& last = steps_.back();
-  RowMatrix x = RowMatrix::Zero(last.cols(), cols);
-  std::vector<double> g(size_t(cols), 0.0);
-  for (int r = 0; r < last.rows(); ++r) {
-    row(r, g.data());
-    for (RowSparse::InnerIterator it(last, r); it; ++it)
-      x.row(it.col()) += it.value() * Eigen::Map<const Eigen::RowVectorXd>(g.data(), cols);
-  }
   // Row-major in between: each stored entry of S_j then adds one contiguous row.
-  for (size_t j = steps_.size() - 1; j-- > 0;) x = steps_[j].transpose() * x;
+  RowMatrix x = RowMatrix::Zero(last.cols(), cols);
+  {
+    // Rows of G in blocks, so that the callback's writes and S_kᵀ's reads share a small buffer.
+    constexpr int kBlock = 256;
+    std::vector<double> g(size_t(kBlock) * size_t(cols), 0.0);
+    const int* outer = last.outerIndexPtr();
+    const int* inner = last.innerIndexPtr();
+    const double* value = last.valuePtr();
+    double* X = x.data();
+    for (int r0 = 0; r0 < last.rows(); r0 += kBlock) {
+      const int r1 = std::min(int(last.rows()), r0 + kBlock);
+      for (int r = r0; r < r1; ++r) row(r, &g[size_t(r - r0) * size_t(cols)]);
+      for (int r = r0; r < r1; ++r) {
+        const double* gr = &g[size_t(r - r0) * size_t(cols)];
+        for (int k = outer[r]; k < outer[r + 1]; ++k) {
+          double* xc = X + size_t(inner[k]) * size_t(cols);
+          const double s = value[k];
+          for (int c = 0; c < cols; ++c) xc[c] += s * gr[c];
+        }
+      }
+    }
+  }
+  for (size_t j = steps_.size() - 1; j-- > 0;) {
+    RowMatrix y = RowMatrix::Zero(steps_[j].cols(), cols);
+    add_transpose_times(steps_[j], x.data(), cols, y.data());
+    x.swap(y);
+  }
   return x;
 }
 
@@ -293,6 +333,144 @@ Eigen::SparseMatrix<double> Subdivision::gram(const Eigen::VectorXd& D) const {
   // Symmetric: its row-major arrays are also its column-major ones (no conversion).
   return Eigen::Map<const Eigen::SparseMatrix<double>>(A.rows(), A.cols(), A.nonZeros(), A.outerIndexPtr(),
                                                        A.innerIndexPtr(), A.valuePtr());
+}
+
+Eigen::SparseMatrix<double> Subdivision::gram_lower(const Eigen::VectorXd& D) const {
+  const int K = levels(), n0 = cage_vertices_, R = refined_vertex_count();
+  const int nf = int(cage_face_start_.size()) - 1;
+  // ---- Groups: the level-K vertices each cage face owns ----------------------------------------
+  // Level-1 quads of cage face f are its corners [start_f, start_{f+1}); every later level splits
+  // quad q into 4q … 4q+3, so f's level-K quads are 4^(K−1) times that range.
+  const size_t per_corner = size_t(1) << (2 * (K - 1));
+  const std::vector<int>& quads = refined_.face_vertices;
+  std::vector<int> group_start{0}, group_rows;
+  group_start.reserve(size_t(nf) + 1), group_rows.reserve(size_t(R));
+  std::vector<char> owned(size_t(R), 0);
+  for (int f = 0; f < nf; ++f) {
+    for (size_t q = per_corner * size_t(cage_face_start_[f]); q < per_corner * size_t(cage_face_start_[f + 1]); ++q)
+      for (int k = 0; k < 4; ++k) {
+        const int r = quads[4 * q + size_t(k)];
+        if (!owned[r]) owned[r] = 1, group_rows.push_back(r);
+      }
+    group_start.push_back(int(group_rows.size()));
+  }
+  for (int r = 0; r < R; ++r)
+    if (!owned[r]) group_rows.push_back(r), group_start.push_back(int(group_rows.size()));
+  const int groups = int(group_start.size()) - 1;
+
+  // ---- Per group: the vertices in between, then dense rows of M --------------------------------
+  // level[j] lists the group's level-j vertices (level K: its rows; level j−1: the columns of
+  // S_j on level[j]); local[j][v] is v's position there while stamp[j][v] is the group's number.
+  std::vector<std::vector<int>> level(static_cast<size_t>(K) + 1), stamp(static_cast<size_t>(K)),
+      local(static_cast<size_t>(K));
+  for (int j = 0; j < K; ++j) {
+    const int n = j == 0 ? n0 : int(steps_[size_t(j) - 1].rows());
+    stamp[j].assign(size_t(n), -1), local[j].assign(size_t(n), 0);
+  }
+  std::vector<std::vector<double>> dense(static_cast<size_t>(K) + 1);  // dense[j]: #level[j] by #level[0], row-major
+  // Each group's cage vertices (sorted) and the lower triangle of its block, row by row.
+  std::vector<int> cols_start{0}, cols;
+  std::vector<size_t> block_start{0};
+  std::vector<double> blocks;
+  cols.reserve(size_t(groups) * 20), blocks.reserve(size_t(groups) * 210);
+  std::vector<double> C;
+  for (int g = 0; g < groups; ++g) {
+    level[K].assign(group_rows.begin() + group_start[g], group_rows.begin() + group_start[g + 1]);
+    for (int j = K; j >= 1; --j) {
+      const RowSparse& S = steps_[size_t(j) - 1];
+      std::vector<int>& below = level[size_t(j) - 1];
+      below.clear();
+      for (int v : level[j])
+        for (RowSparse::InnerIterator it(S, v); it; ++it) {
+          const int c = int(it.col());
+          if (stamp[j - 1][c] != g) stamp[j - 1][c] = g, local[j - 1][c] = int(below.size()), below.push_back(c);
+        }
+    }
+    std::vector<int>& base = level[0];
+    std::sort(base.begin(), base.end());
+    const int m = int(base.size());
+    for (int a = 0; a < m; ++a) local[0][base[a]] = a;
+    // dense[1] = S_1 restricted; dense[j] = S_j restricted · dense[j−1].
+    for (int j = 1; j <= K; ++j) {
+      const RowSparse& S = steps_[size_t(j) - 1];
+      std::vector<double>& out = dense[j];
+      out.assign(level[j].size() * size_t(m), 0.0);
+      for (size_t i = 0; i < level[j].size(); ++i) {
+        double* row = &out[i * size_t(m)];
+        for (RowSparse::InnerIterator it(S, level[j][i]); it; ++it) {
+          const int c = local[j - 1][it.col()];
+          if (j == 1) {
+            row[c] += it.value();
+          } else {
+            const double w = it.value();
+            const double* in = &dense[size_t(j) - 1][size_t(c) * size_t(m)];
+            for (int a = 0; a < m; ++a) row[a] += w * in[a];
+          }
+        }
+      }
+    }
+    // Lower triangle of Σ_r D_r b_r b_rᵀ over the group's rows b_r.
+    C.assign(size_t(m) * size_t(m + 1) / 2, 0.0);
+    const std::vector<double>& B = dense[K];
+    for (size_t i = 0; i < level[K].size(); ++i) {
+      const double d = D[level[K][i]];
+      const double* b = &B[i * size_t(m)];
+      double* c = C.data();
+      for (int a = 0; a < m; ++a) {
+        const double t = d * b[a];
+        if (t != 0.0)
+          for (int e = 0; e <= a; ++e) c[e] += t * b[e];
+        c += a + 1;
+      }
+    }
+    cols.insert(cols.end(), base.begin(), base.end());
+    cols_start.push_back(int(cols.size()));
+    blocks.insert(blocks.end(), C.begin(), C.end());
+    block_start.push_back(blocks.size());
+  }
+
+  // ---- Assembly of the lower triangle (column-major) -----------------------------------------
+  // Column b holds every a ≥ b that shares a group with b.
+  std::vector<int> vg_start(size_t(n0) + 1, 0), vg;  // cage vertex → the groups it is in
+  for (int c : cols) ++vg_start[c + 1];
+  for (int v = 0; v < n0; ++v) vg_start[v + 1] += vg_start[v];
+  vg.resize(cols.size());
+  {
+    std::vector<int> fill(vg_start.begin(), vg_start.end() - 1);
+    for (int g = 0; g < groups; ++g)
+      for (int k = cols_start[g]; k < cols_start[g + 1]; ++k) vg[fill[cols[k]]++] = g;
+  }
+  std::vector<int> outer(size_t(n0) + 1, 0), inner, mark(size_t(n0), -1);
+  inner.reserve(cols.size() * 8);
+  for (int b = 0; b < n0; ++b) {
+    const size_t first = inner.size();
+    for (int q = vg_start[b]; q < vg_start[b + 1]; ++q) {
+      const int g = vg[q];
+      for (int k = cols_start[g]; k < cols_start[g + 1]; ++k) {
+        const int a = cols[k];
+        if (a >= b && mark[a] != b) mark[a] = b, inner.push_back(a);
+      }
+    }
+    std::sort(inner.begin() + std::ptrdiff_t(first), inner.end());
+    outer[b + 1] = int(inner.size());
+  }
+  std::vector<double> values(inner.size(), 0.0);
+  for (int g = 0; g < groups; ++g) {
+    const int* base = &cols[cols_start[g]];
+    const int m = cols_start[g + 1] - cols_start[g];
+    const double* c = &blocks[block_start[g]];
+    // Block entry (a, e), a ≥ e (local), sits at a(a+1)/2 + e; column base[e] takes rows base[a ≥ e],
+    // found by walking that column's sorted rows once.
+    for (int e = 0; e < m; ++e) {
+      int at = outer[base[e]];
+      for (int a = e; a < m; ++a) {
+        while (inner[at] != base[a]) ++at;
+        values[at] += c[size_t(a) * size_t(a + 1) / 2 + size_t(e)];
+      }
+    }
+  }
+  return Eigen::Map<const Eigen::SparseMatrix<double>>(n0, n0, int(inner.size()), outer.data(), inner.data(),
+                                                       values.data());
 }
 
 RowSparse Subdivision::compose() const {

@@ -71,7 +71,18 @@ class Subdivision {
   // Mᵀ · G (#cage by cols) for the #refined by cols matrix G given row by row: row(r, g) writes
   // row r of G into g (cols values). G is never stored: each row goes straight through S_kᵀ.
   Eigen::MatrixXd apply_transpose(int cols, const std::function<void(int, double*)>& row) const;
-  // Mᵀ D M for the diagonal D (#refined), as a #cage by #cage sparse matrix, level by level.
+  // The lower triangle (column-major, diagonal included) of Mᵀ D M for the diagonal D (#refined),
+  // a #cage by #cage sparse matrix: what the rig factorizes. Assembled from small dense blocks,
+  // one per cage face: each level-k vertex is owned by the first cage face whose level-k quads
+  // contain it (vertices of no quad, i.e. descendants of cage vertices no face uses, form groups
+  // of their own), so Mᵀ D M = Σ_f M_fᵀ D_f M_f over the rows M_f of the vertices f owns. M_f is
+  // dense over the few cage vertices C_f that reach them (a face's 1-ring): the chain restricted
+  // to the vertices in between, S_k[R_f, ·] ⋯ S_1[·, C_f], multiplied out into dense rows. The
+  // product of the whole chain over the finest level (gram below) is never formed.
+  Eigen::SparseMatrix<double> gram_lower(const Eigen::VectorXd& D) const;
+  // Mᵀ D M in full by sparse products, level by level: S_1ᵀ(S_2ᵀ(⋯ S_kᵀ D S_k ⋯)S_2)S_1. The
+  // reference construction (tests compare gram_lower against it); slower and far larger in
+  // memory on big cages.
   Eigen::SparseMatrix<double> gram(const Eigen::VectorXd& D) const;
   // The product M, explicitly (for tests and small cages).
   RowSparse compose() const;
@@ -80,6 +91,7 @@ class Subdivision {
 
  private:
   int cage_vertices_ = 0;
+  std::vector<int> cage_face_start_;  // the cage's face offsets: face f's level-k quads are contiguous
   std::vector<RowSparse> steps_;
   PolyMesh refined_;
   std::vector<Eigen::MatrixXd> scratch_;  // per intermediate level: cols by #rows, i.e. #rows by cols row-major
