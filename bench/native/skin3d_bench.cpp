@@ -2,9 +2,12 @@
 // SubdivisionRig::setup + use_shepard + precompute on a shared cage, optionally refined first
 // (as bench/skin3d.mjs does with refineCage), at level K with H handles (farthest points).
 //
-//   skin3d_bench <cage.obj> [refine=2] [levels=3] [handles=4] [runs=1]
+//   skin3d_bench <cage.obj> [refine=2] [levels=3] [handles=4] [runs=1] [phases]
 //
-// Prints one JSON line per run: {"setup_ms","weights_ms","precompute_ms","total_ms",...}.
+// Prints one JSON line per run: {"setup_ms","weights_ms","precompute_ms","total_ms",...}. With
+// "phases": the fastest of `runs` calls of each precompute kernel alone instead (subdivision
+// build, Â by face blocks, Â by the chain of sparse products, Ŵ = Mᵀ G), to compare kernels on a
+// busy machine.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -68,6 +71,40 @@ int main(int argc, char** argv) {
   const int H = argc > 4 ? std::atoi(argv[4]) : 4, runs = argc > 5 ? std::atoi(argv[5]) : 1;
   const test_cages::Cage cage = refined_cage(test_cages::read_cage(name), refine);
   const std::vector<double> handles = farthest(cage.V, H);
+  if (argc > 6 && std::string(argv[6]) == "phases") {
+    const PolyMesh mesh = cage.mesh();
+    Subdivision s;
+    double build = INFINITY, lower = INFINITY, products = INFINITY, transpose = INFINITY;
+    for (int run = 0; run < runs; ++run) {
+      const auto t0 = Clock::now();
+      s.build(mesh, levels);
+      build = std::min(build, ms_since(t0));
+    }
+    const Eigen::VectorXd D = Eigen::VectorXd::LinSpaced(s.refined_vertex_count(), 1.0, 2.0);
+    double check = 0;
+    for (int run = 0; run < runs; ++run) {
+      const auto t0 = Clock::now();
+      check += s.gram_lower(D).sum();
+      lower = std::min(lower, ms_since(t0));
+    }
+    for (int run = 0; run < runs && levels <= 3; ++run) {
+      const auto t0 = Clock::now();
+      check -= 0.5 * (s.gram(D).sum() + s.gram(D).diagonal().sum());
+      products = std::min(products, ms_since(t0) / 2);
+    }
+    for (int run = 0; run < runs; ++run) {
+      const auto t0 = Clock::now();
+      check += s.apply_transpose(4 * H, [&](int r, double* g) {
+                  for (int c = 0; c < 4 * H; ++c) g[c] = D[r] * (1 + c);
+                }).sum();
+      transpose = std::min(transpose, ms_since(t0));
+    }
+    std::printf(
+        "{\"build_ms\":%.1f,\"gram_lower_ms\":%.1f,\"gram_products_ms\":%.1f,\"apply_transpose_ms\":%.1f,"
+        "\"check\":%.6g}\n",
+        build, lower, products, transpose, check);
+    return 0;
+  }
   for (int run = 0; run < runs; ++run) {
     SubdivisionRig rig;
     const auto t0 = Clock::now();

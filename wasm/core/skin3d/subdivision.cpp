@@ -13,13 +13,22 @@ using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::R
 // Sharpness of a child half-edge: one level less, never below 0; +∞ stays +∞.
 double decay(double s) { return std::isinf(s) ? s : std::max(0.0, s - 1.0); }
 
-// Builds a row-major sparse matrix row by row (rows in order): each row's terms are summed per
+// Builds a row-major sparse matrix row by row (rows in order): a row's terms are summed per column
+// as they come (slot[c] = where column c sits if it is already in the current row), sorted by
 // column when the row ends. Cheaper than triplets on the finest level's millions of entries.
 struct Rows {
-  std::vector<int> outer{0}, inner;
+  std::vector<int> outer{0}, inner, slot;
   std::vector<double> values;
+  explicit Rows(int cols) : slot(size_t(cols), -1) {}
   void add(int col, double w) {
-    if (w != 0.0) inner.push_back(col), values.push_back(w);
+    if (w == 0.0) return;
+    const int at = slot[col];
+    if (at >= outer.back()) {  // earlier rows' positions are all below the current row's start
+      values[at] += w;
+    } else {
+      slot[col] = int(inner.size());
+      inner.push_back(col), values.push_back(w);
+    }
   }
   // w · (face point of f) = w/n · Σ face vertices.
   void add_face(const PolyMesh& m, int f, double w) {
@@ -27,26 +36,19 @@ struct Rows {
     for (int c = m.face_start[f]; c < m.face_start[f + 1]; ++c) add(m.face_vertices[c], w / n);
   }
   void end_row() {
-    // Insertion sort by column (rows hold a few dozen terms), then merge equal columns.
+    // Insertion sort by column (rows hold a handful of distinct columns).
     const int begin = outer.back(), end = int(inner.size());
     for (int i = begin + 1; i < end; ++i)
       for (int j = i; j > begin && inner[j - 1] > inner[j]; --j)
         std::swap(inner[j - 1], inner[j]), std::swap(values[j - 1], values[j]);
-    int out = begin;
-    for (int i = begin; i < end; ++i) {
-      if (out > begin && inner[out - 1] == inner[i]) {
-        values[out - 1] += values[i];
-      } else {
-        inner[out] = inner[i], values[out] = values[i];
-        ++out;
-      }
-    }
-    inner.resize(size_t(out)), values.resize(size_t(out));
-    outer.push_back(out);
+    outer.push_back(end);
   }
   void to_matrix(int cols, RowSparse& S) const {
-    S = Eigen::Map<const RowSparse>(int(outer.size()) - 1, cols, int(inner.size()), outer.data(), inner.data(),
-                                    values.data());
+    S.resize(int(outer.size()) - 1, cols);
+    S.resizeNonZeros(Eigen::Index(inner.size()));
+    std::copy(outer.begin(), outer.end(), S.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), S.innerIndexPtr());
+    std::copy(values.begin(), values.end(), S.valuePtr());
   }
 };
 
@@ -88,9 +90,9 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
   const int nv = p.vertex_count, ne = p.edge_count(), nf = p.face_count();
   const int edge0 = nv, face0 = nv + ne;
   // Rows in child order: vertex points, edge points, face points.
-  Rows rows;
+  Rows rows(nv);
   rows.outer.reserve(size_t(nv + ne + nf) + 1);
-  rows.inner.reserve(size_t(nv) * 16 + size_t(ne) * 8 + p.face_vertices.size());
+  rows.inner.reserve(size_t(nv) * 10 + size_t(ne) * 6 + p.face_vertices.size());
   rows.values.reserve(rows.inner.capacity());
 
   // Vertex points.
@@ -172,7 +174,7 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
 // ---------------------------------------------------------------------------------------------
 
 void limit_stencils(const PolyMesh& p, RowSparse& L) {
-  Rows rows;
+  Rows rows(p.vertex_count);
   for (int v = 0; v < p.vertex_count; ++v) {
     const int e_begin = p.vertex_edge_start[v], e_end = p.vertex_edge_start[v + 1];
     const int n = e_end - e_begin;
@@ -352,6 +354,7 @@ Eigen::SparseMatrix<double> Subdivision::gram_lower(const Eigen::VectorXd& D) co
         const int r = quads[4 * q + size_t(k)];
         if (!owned[r]) owned[r] = 1, group_rows.push_back(r);
       }
+    std::sort(group_rows.begin() + group_start.back(), group_rows.end());  // memory order
     group_start.push_back(int(group_rows.size()));
   }
   for (int r = 0; r < R; ++r)
@@ -360,72 +363,88 @@ Eigen::SparseMatrix<double> Subdivision::gram_lower(const Eigen::VectorXd& D) co
 
   // ---- Per group: the vertices in between, then dense rows of M --------------------------------
   // level[j] lists the group's level-j vertices (level K: its rows; level j−1: the columns of
-  // S_j on level[j]); local[j][v] is v's position there while stamp[j][v] is the group's number.
-  std::vector<std::vector<int>> level(static_cast<size_t>(K) + 1), stamp(static_cast<size_t>(K)),
-      local(static_cast<size_t>(K));
-  for (int j = 0; j < K; ++j) {
-    const int n = j == 0 ? n0 : int(steps_[size_t(j) - 1].rows());
-    stamp[j].assign(size_t(n), -1), local[j].assign(size_t(n), 0);
-  }
-  std::vector<std::vector<double>> dense(static_cast<size_t>(K) + 1);  // dense[j]: #level[j] by #level[0], row-major
+  // S_j on level[j], in order of appearance). slot[j][v] = {group, position of v in level[j]}.
+  // S_j restricted to the group is copied once, with local column numbers, into rows_at[j]
+  // (offsets), local_col[j] and weight[j]: the numeric pass then reads only small arrays.
+  struct Slot {
+    int group = -1, at = 0;
+  };
+  const size_t KK = size_t(K) + 1;
+  std::vector<std::vector<int>> level(KK), rows_at(KK), local_col(KK);
+  std::vector<std::vector<double>> weight(KK), dense(KK);  // dense[j]: #level[j] by m, row-major
+  std::vector<std::vector<Slot>> slot(KK);
+  for (int j = 0; j < K; ++j) slot[j].assign(size_t(j == 0 ? n0 : int(steps_[size_t(j) - 1].rows())), Slot{});
   // Each group's cage vertices (sorted) and the lower triangle of its block, row by row.
-  std::vector<int> cols_start{0}, cols;
+  std::vector<int> cols_start{0}, cols, rank;
+  std::vector<std::pair<int, int>> sorted;
   std::vector<size_t> block_start{0};
-  std::vector<double> blocks;
+  std::vector<double> blocks, scaled;
   cols.reserve(size_t(groups) * 20), blocks.reserve(size_t(groups) * 210);
-  std::vector<double> C;
+  Eigen::MatrixXd C;
   for (int g = 0; g < groups; ++g) {
     level[K].assign(group_rows.begin() + group_start[g], group_rows.begin() + group_start[g + 1]);
     for (int j = K; j >= 1; --j) {
       const RowSparse& S = steps_[size_t(j) - 1];
+      const int* outer = S.outerIndexPtr();
+      const int* inner = S.innerIndexPtr();
+      const double* value = S.valuePtr();
       std::vector<int>& below = level[size_t(j) - 1];
-      below.clear();
-      for (int v : level[j])
-        for (RowSparse::InnerIterator it(S, v); it; ++it) {
-          const int c = int(it.col());
-          if (stamp[j - 1][c] != g) stamp[j - 1][c] = g, local[j - 1][c] = int(below.size()), below.push_back(c);
+      std::vector<Slot>& where = slot[size_t(j) - 1];
+      below.clear(), rows_at[j].assign(1, 0), local_col[j].clear(), weight[j].clear();
+      for (int v : level[j]) {
+        for (int k = outer[v]; k < outer[v + 1]; ++k) {
+          Slot& w = where[inner[k]];
+          if (w.group != g) w.group = g, w.at = int(below.size()), below.push_back(inner[k]);
+          local_col[j].push_back(w.at), weight[j].push_back(value[k]);
         }
+        rows_at[j].push_back(int(local_col[j].size()));
+      }
+      // Sorted, so that the next level reads its rows of S_(j−1) (and level 0 its block's lower
+      // triangle, the global one's) in memory order.
+      const int n = int(below.size());
+      sorted.resize(size_t(n)), rank.resize(size_t(n));
+      for (int a = 0; a < n; ++a) sorted[a] = {below[a], a};
+      std::sort(sorted.begin(), sorted.end());
+      for (int a = 0; a < n; ++a) rank[sorted[a].second] = a, below[a] = sorted[a].first;
+      for (int& c : local_col[j]) c = rank[c];
     }
-    std::vector<int>& base = level[0];
-    std::sort(base.begin(), base.end());
-    const int m = int(base.size());
-    for (int a = 0; a < m; ++a) local[0][base[a]] = a;
+    const int m = int(level[0].size());
     // dense[1] = S_1 restricted; dense[j] = S_j restricted · dense[j−1].
     for (int j = 1; j <= K; ++j) {
-      const RowSparse& S = steps_[size_t(j) - 1];
+      const size_t n = level[j].size();
       std::vector<double>& out = dense[j];
-      out.assign(level[j].size() * size_t(m), 0.0);
-      for (size_t i = 0; i < level[j].size(); ++i) {
+      out.assign(n * size_t(m), 0.0);
+      const int* at = rows_at[j].data();
+      const int* lc = local_col[j].data();
+      const double* wt = weight[j].data();
+      for (size_t i = 0; i < n; ++i) {
         double* row = &out[i * size_t(m)];
-        for (RowSparse::InnerIterator it(S, level[j][i]); it; ++it) {
-          const int c = local[j - 1][it.col()];
-          if (j == 1) {
-            row[c] += it.value();
-          } else {
-            const double w = it.value();
-            const double* in = &dense[size_t(j) - 1][size_t(c) * size_t(m)];
+        if (j == 1) {
+          for (int k = at[i]; k < at[i + 1]; ++k) row[lc[k]] += wt[k];
+        } else {
+          const double* prev = dense[size_t(j) - 1].data();
+          for (int k = at[i]; k < at[i + 1]; ++k) {
+            const double w = wt[k];
+            const double* in = prev + size_t(lc[k]) * size_t(m);
             for (int a = 0; a < m; ++a) row[a] += w * in[a];
           }
         }
       }
     }
-    // Lower triangle of Σ_r D_r b_r b_rᵀ over the group's rows b_r.
-    C.assign(size_t(m) * size_t(m + 1) / 2, 0.0);
-    const std::vector<double>& B = dense[K];
-    for (size_t i = 0; i < level[K].size(); ++i) {
-      const double d = D[level[K][i]];
-      const double* b = &B[i * size_t(m)];
-      double* c = C.data();
-      for (int a = 0; a < m; ++a) {
-        const double t = d * b[a];
-        if (t != 0.0)
-          for (int e = 0; e <= a; ++e) c[e] += t * b[e];
-        c += a + 1;
-      }
+    // Σ_r D_r b_r b_rᵀ over the group's rows b_r: Bᵀ (D B), then its lower triangle.
+    const int n = int(level[K].size());
+    using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const Eigen::Map<const RowMatrix> B(dense[K].data(), n, m);
+    scaled.resize(size_t(n) * size_t(m));
+    Eigen::Map<RowMatrix> DB(scaled.data(), n, m);
+    for (int i = 0; i < n; ++i) DB.row(i) = D[level[K][i]] * B.row(i);
+    C.resize(m, m);
+    C.noalias() = B.transpose() * DB;
+    for (int a = 0; a < m; ++a) {
+      cols.push_back(level[0][a]);
+      for (int e = 0; e <= a; ++e) blocks.push_back(C(a, e));
     }
-    cols.insert(cols.end(), base.begin(), base.end());
     cols_start.push_back(int(cols.size()));
-    blocks.insert(blocks.end(), C.begin(), C.end());
     block_start.push_back(blocks.size());
   }
 
