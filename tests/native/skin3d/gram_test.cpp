@@ -1,6 +1,8 @@
 // Â = Mᵀ D M assembled from per-face dense blocks (Subdivision::gram_lower, what the rig factorizes)
 // against two independent constructions: the level-by-level sparse products of the chain
-// (Subdivision::gram) and, on the smaller cages, Eigen's own sparse product of the explicit M.
+// (Subdivision::gram) and, on the smaller cages, Eigen's own sparse product of the explicit M;
+// Ŵ = Mᵀ G from the same pass (Subdivision::normal_equations) against S_1ᵀ ⋯ S_kᵀ G level by level
+// (apply_transpose) and Eigen's Mᵀ G.
 // Every shared cage (quads, triangles, pentagons, creases, boundaries), a sheet with corners, a
 // cage with a vertex no face uses, levels 1 to 3, random positive D.
 #include <gtest/gtest.h>
@@ -58,10 +60,30 @@ void check(const Cage& cage, int levels, const std::string& name, bool with_expl
   const Sparse lower = s.gram_lower(D);
   const std::string what = name + " level " + std::to_string(levels);
   expect_same_lower(s.gram(D), lower, 1e-13, what + " vs the chain of products");
+  // Ŵ = Mᵀ G in the same pass, against the level-by-level transposes (and Eigen's Mᵀ G).
+  const int cols = 6;
+  auto g_row = [&](int r, double* g) {
+    for (int c = 0; c < cols; ++c) g[c] = std::sin(0.7 * r + 1.3 * c) + 0.25 * c;
+  };
+  Eigen::MatrixXd MtG;
+  const Sparse both = s.normal_equations(D, cols, g_row, MtG);
+  EXPECT_EQ(Sparse(both - lower).norm(), 0.0) << what << ": normal_equations' Â differs from gram_lower's";
+  const Eigen::MatrixXd chain = s.apply_transpose(cols, g_row);
+  ASSERT_EQ(MtG.rows(), chain.rows()) << what;
+  ASSERT_EQ(MtG.cols(), chain.cols()) << what;
+  EXPECT_LE((MtG - chain).cwiseAbs().maxCoeff(), 1e-13 * chain.cwiseAbs().maxCoeff()) << what << " Ŵ";
   if (with_explicit_product) {
     const Eigen::SparseMatrix<double> M = s.compose();
     const Sparse reference = Sparse(M.transpose()) * D.asDiagonal() * M;
     expect_same_lower(reference, lower, 1e-13, what + " vs Eigen's Mᵀ D M");
+    Eigen::MatrixXd G(s.refined_vertex_count(), cols);
+    std::vector<double> g(cols);
+    for (int r = 0; r < G.rows(); ++r) {
+      g_row(r, g.data());
+      for (int c = 0; c < cols; ++c) G(r, c) = g[c];
+    }
+    const Eigen::MatrixXd direct = Sparse(M.transpose()) * G;
+    EXPECT_LE((MtG - direct).cwiseAbs().maxCoeff(), 1e-13 * direct.cwiseAbs().maxCoeff()) << what << " Ŵ vs Mᵀ G";
   }
 }
 

@@ -130,17 +130,21 @@ std::string SubdivisionRig::precompute() {
   const int R = refined_vertex_count(), H = handles_;
   const Eigen::Map<const Eigen::VectorXd> D(areas_.data(), R);
 
-  // Ŵ for every handle at once: G(r, 4i + c) = D_r w_ir [p_r; 1]_c, then Mᵀ G, level by level
-  // (G streamed row by row, never stored).
-  Eigen::MatrixXd B = subdivision_.apply_transpose(4 * H, [&](int r, double* g) {
-    const double* w = &refined_weights_[size_t(r) * H];
-    const double* p = &rest_refined_[3 * size_t(r)];
-    for (int i = 0; i < H; ++i) {
-      const double dw = D[r] * w[i];
-      g[4 * i] = dw * p[0], g[4 * i + 1] = dw * p[1], g[4 * i + 2] = dw * p[2], g[4 * i + 3] = dw;
-    }
-  });
-  Eigen::SparseMatrix<double> A = subdivision_.gram_lower(D);  // the lower triangle (all the ordering reads)
+  // Ŵ for every handle at once: G(r, 4i + c) = D_r w_ir [p_r; 1]_c, then Mᵀ G (G streamed row by
+  // row, never stored), in the same pass over the cage faces as Â = Mᵀ D M (its lower triangle, all
+  // the ordering and the factorization read).
+  Eigen::MatrixXd B;
+  Eigen::SparseMatrix<double> A = subdivision_.normal_equations(
+      D, 4 * H,
+      [&](int r, double* g) {
+        const double* w = &refined_weights_[size_t(r) * H];
+        const double* p = &rest_refined_[3 * size_t(r)];
+        for (int i = 0; i < H; ++i) {
+          const double dw = D[r] * w[i];
+          g[4 * i] = dw * p[0], g[4 * i + 1] = dw * p[1], g[4 * i + 2] = dw * p[2], g[4 * i + 3] = dw;
+        }
+      },
+      B);
 
   // M can be rank-deficient: on the cube (every vertex of valence 3) the checkerboard ±1 of the
   // cage vertices subdivides to 0. A small pull of each cage vertex toward its own blend,

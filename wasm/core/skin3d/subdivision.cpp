@@ -338,6 +338,13 @@ Eigen::SparseMatrix<double> Subdivision::gram(const Eigen::VectorXd& D) const {
 }
 
 Eigen::SparseMatrix<double> Subdivision::gram_lower(const Eigen::VectorXd& D) const {
+  Eigen::MatrixXd unused;
+  return normal_equations(D, 0, nullptr, unused);
+}
+
+Eigen::SparseMatrix<double> Subdivision::normal_equations(const Eigen::VectorXd& D, int width,
+                                                          const std::function<void(int, double*)>& row,
+                                                          Eigen::MatrixXd& MtG) const {
   const int K = levels(), n0 = cage_vertices_, R = refined_vertex_count();
   const int nf = int(cage_face_start_.size()) - 1;
   // ---- Groups: the level-K vertices each cage face owns ----------------------------------------
@@ -381,6 +388,11 @@ Eigen::SparseMatrix<double> Subdivision::gram_lower(const Eigen::VectorXd& D) co
   std::vector<double> blocks, scaled;
   cols.reserve(size_t(groups) * 20), blocks.reserve(size_t(groups) * 210);
   Eigen::MatrixXd C;
+  // Ŵ: S_kᵀ G per group (its rows of S_k are at hand), summed into the level-(k−1) rows X.
+  using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const int below_finest = K == 1 ? n0 : int(steps_[size_t(K) - 2].rows());
+  RowMatrix X = RowMatrix::Zero(width > 0 ? below_finest : 0, width);
+  std::vector<double> g_rows, y;
   for (int g = 0; g < groups; ++g) {
     level[K].assign(group_rows.begin() + group_start[g], group_rows.begin() + group_start[g + 1]);
     for (int j = K; j >= 1; --j) {
@@ -408,6 +420,27 @@ Eigen::SparseMatrix<double> Subdivision::gram_lower(const Eigen::VectorXd& D) co
       for (int a = 0; a < n; ++a) rank[sorted[a].second] = a, below[a] = sorted[a].first;
       for (int& c : local_col[j]) c = rank[c];
     }
+    if (width > 0) {
+      const size_t n = level[K].size(), c = size_t(width);
+      g_rows.resize(n * c);
+      for (size_t i = 0; i < n; ++i) row(level[K][i], &g_rows[i * c]);
+      y.assign(level[K - 1].size() * c, 0.0);
+      const int* at = rows_at[K].data();
+      const int* lc = local_col[K].data();
+      const double* wt = weight[K].data();
+      for (size_t i = 0; i < n; ++i) {
+        const double* gi = &g_rows[i * c];
+        for (int k = at[i]; k < at[i + 1]; ++k) {
+          double* yk = &y[size_t(lc[k]) * c];
+          const double w = wt[k];
+          for (size_t e = 0; e < c; ++e) yk[e] += w * gi[e];
+        }
+      }
+      for (size_t a = 0; a < level[K - 1].size(); ++a) {
+        double* x = X.data() + size_t(level[K - 1][a]) * c;
+        for (size_t e = 0; e < c; ++e) x[e] += y[a * c + e];
+      }
+    }
     const int m = int(level[0].size());
     // dense[1] = S_1 restricted; dense[j] = S_j restricted · dense[j−1].
     for (int j = 1; j <= K; ++j) {
@@ -433,7 +466,6 @@ Eigen::SparseMatrix<double> Subdivision::gram_lower(const Eigen::VectorXd& D) co
     }
     // Σ_r D_r b_r b_rᵀ over the group's rows b_r: Bᵀ (D B), then its lower triangle.
     const int n = int(level[K].size());
-    using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     const Eigen::Map<const RowMatrix> B(dense[K].data(), n, m);
     scaled.resize(size_t(n) * size_t(m));
     Eigen::Map<RowMatrix> DB(scaled.data(), n, m);
@@ -446,6 +478,15 @@ Eigen::SparseMatrix<double> Subdivision::gram_lower(const Eigen::VectorXd& D) co
     }
     cols_start.push_back(int(cols.size()));
     block_start.push_back(blocks.size());
+  }
+
+  if (width > 0) {  // the coarser levels of Ŵ: S_(k−1)ᵀ … S_1ᵀ X
+    for (int j = K - 1; j >= 1; --j) {
+      RowMatrix Y = RowMatrix::Zero(steps_[size_t(j) - 1].cols(), width);
+      add_transpose_times(steps_[size_t(j) - 1], X.data(), width, Y.data());
+      X.swap(Y);
+    }
+    MtG = X;
   }
 
   // ---- Assembly of the lower triangle (column-major) -----------------------------------------

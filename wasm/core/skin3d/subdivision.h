@@ -80,6 +80,12 @@ class Subdivision {
   // to the vertices in between, S_k[R_f, ·] ⋯ S_1[·, C_f], multiplied out into dense rows. The
   // product of the whole chain over the finest level (gram below) is never formed.
   Eigen::SparseMatrix<double> gram_lower(const Eigen::VectorXd& D) const;
+  // The rig's normal equations in one pass: returns gram_lower(D) and writes MtG = Mᵀ G (#cage by
+  // width) for G given row by row as in apply_transpose (with width = 0, MtG is left alone). Each
+  // group's rows of G go through its copy of S_k at hand; S_(k−1)ᵀ … S_1ᵀ follow level by level.
+  Eigen::SparseMatrix<double> normal_equations(const Eigen::VectorXd& D, int width,
+                                               const std::function<void(int, double*)>& row,
+                                               Eigen::MatrixXd& MtG) const;
   // Mᵀ D M in full by sparse products, level by level: S_1ᵀ(S_2ᵀ(⋯ S_kᵀ D S_k ⋯)S_2)S_1. The
   // reference construction (tests compare gram_lower against it); slower and far larger in
   // memory on big cages.
