@@ -53,7 +53,7 @@ Eigen::SparseMatrix<double> permuted_full(const Eigen::SparseMatrix<double>& L, 
 
 std::string SubdivisionRig::setup(const double* positions, int vertex_count, const int* face_sizes, int face_count,
                                   const int* face_indices, const Crease* creases, int crease_count, int levels,
-                                  int handle_count) {
+                                  int handle_count, const Corner* corners, int corner_count) {
   ready_ = false;
   if (levels < 1 || levels > 4) return "levels must be in 1..4, got " + std::to_string(levels);
   if (handle_count < 1) return "a rig needs at least one handle";
@@ -63,6 +63,7 @@ std::string SubdivisionRig::setup(const double* positions, int vertex_count, con
         return "vertex " + std::to_string(v + 1) + " has a non-finite coordinate";
   if (std::string e = make_poly_mesh(vertex_count, face_sizes, face_count, face_indices, mesh_); !e.empty()) return e;
   if (std::string e = apply_creases(creases, crease_count, mesh_); !e.empty()) return e;
+  if (std::string e = apply_corners(corners, corner_count, mesh_); !e.empty()) return e;
   handles_ = handle_count;
   rest_cage_.assign(positions, positions + 3 * size_t(vertex_count));
   subdivision_.build(mesh_, levels);

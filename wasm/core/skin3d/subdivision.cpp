@@ -80,6 +80,11 @@ VertexRule classify(const PolyMesh& p, int v) {
   return r;
 }
 
+// Weight of a corner tag's rule (the vertex itself) against the rule of its edges: min(1, s_v).
+double vertex_corner(const PolyMesh& p, int v) {
+  return p.vertex_sharpness.empty() ? 0.0 : std::min(1.0, p.vertex_sharpness[v]);
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -105,22 +110,27 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
       rows.end_row();
       continue;
     }
-    const VertexRule rule = classify(p, v);
-    const bool corner = rule.corner;
-    const double alpha = rule.alpha;
-    const int* ends = rule.ends;
-    if (corner) {
-      rows.add(v, alpha);
-    } else if (rule.sharp == 2) {
-      rows.add(v, alpha * 0.75);
-      rows.add(ends[0], alpha * 0.125);
-      rows.add(ends[1], alpha * 0.125);
-    }
-    if (alpha < 1) {
-      const double n = valence, w = 1 - alpha;
-      rows.add(v, w * (n - 2) / n);
-      for (int q = e_begin; q < e_end; ++q) rows.add(p.other_end(p.vertex_edges[q], v), w / (n * n));
-      for (int q = f_begin; q < f_end; ++q) rows.add_face(p, p.vertex_faces[q], w / (n * n));
+    // A corner tag: a·v + u·(the rule of the vertex's edges), a = min(1, s_v), u = 1 − a.
+    const double a = vertex_corner(p, v), u = 1 - a;
+    if (a > 0) rows.add(v, a);
+    if (u > 0) {
+      const VertexRule rule = classify(p, v);
+      const bool corner = rule.corner;
+      const double alpha = u * rule.alpha;
+      const int* ends = rule.ends;
+      if (corner) {
+        rows.add(v, alpha);
+      } else if (rule.sharp == 2) {
+        rows.add(v, alpha * 0.75);
+        rows.add(ends[0], alpha * 0.125);
+        rows.add(ends[1], alpha * 0.125);
+      }
+      if (rule.alpha < 1) {
+        const double n = valence, w = u * (1 - rule.alpha);
+        rows.add(v, w * (n - 2) / n);
+        for (int q = e_begin; q < e_end; ++q) rows.add(p.other_end(p.vertex_edges[q], v), w / (n * n));
+        for (int q = f_begin; q < f_end; ++q) rows.add_face(p, p.vertex_faces[q], w / (n * n));
+      }
     }
     rows.end_row();
   }
@@ -167,6 +177,9 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
     const int a = child.edge_vertices[2 * e], b = child.edge_vertices[2 * e + 1];
     if (a < nv && b >= edge0 && b < face0) child.edge_sharpness[e] = decay(p.edge_sharpness[b - edge0]);
   }
+  // Corner tags decay like creases, on the vertex points (child v < #V descends from v).
+  for (int v = 0; v < nv && v < int(p.vertex_sharpness.size()); ++v)
+    child.vertex_sharpness[v] = decay(p.vertex_sharpness[v]);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -179,14 +192,17 @@ void limit_stencils(const PolyMesh& p, RowSparse& L) {
     const int e_begin = p.vertex_edge_start[v], e_end = p.vertex_edge_start[v + 1];
     const int n = e_end - e_begin;
     const VertexRule rule = classify(p, v);
-    if (n == 0 || rule.corner) rows.add(v, n == 0 ? 1.0 : rule.alpha);
-    if (n > 0 && !rule.corner && rule.sharp == 2) {
-      rows.add(v, rule.alpha * 4 / 6);
-      rows.add(rule.ends[0], rule.alpha / 6);
-      rows.add(rule.ends[1], rule.alpha / 6);
+    // A corner tag: a·v + u·(the mask of the vertex's edges), as in refine_once.
+    const double a = n == 0 ? 0.0 : vertex_corner(p, v), u = 1 - a;
+    if (a > 0) rows.add(v, a);
+    if (n == 0 || (rule.corner && u > 0)) rows.add(v, n == 0 ? 1.0 : u * rule.alpha);
+    if (n > 0 && u > 0 && !rule.corner && rule.sharp == 2) {
+      rows.add(v, u * rule.alpha * 4 / 6);
+      rows.add(rule.ends[0], u * rule.alpha / 6);
+      rows.add(rule.ends[1], u * rule.alpha / 6);
     }
-    if (n > 0 && rule.alpha < 1) {
-      const double w = (1 - rule.alpha) / (n * (n + 5.0));
+    if (n > 0 && u > 0 && rule.alpha < 1) {
+      const double w = u * (1 - rule.alpha) / (n * (n + 5.0));
       rows.add(v, w * n * n);
       for (int q = e_begin; q < e_end; ++q) rows.add(p.other_end(p.vertex_edges[q], v), 4 * w);
       for (int q = p.vertex_face_start[v]; q < p.vertex_face_start[v + 1]; ++q) {

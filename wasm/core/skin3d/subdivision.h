@@ -18,6 +18,9 @@
 //                 A crease or corner whose sharp edges have mean sharpness s̄ < 1 is blended
 //                 (1 − s̄)·smooth + s̄·(crease or corner) — a simplification of OpenSubdiv's
 //                 fractional transition; infinitely sharp and boundary edges give s̄ ≥ 1.
+//                 A corner tag (vertex sharpness s_v > 0, OpenSubdiv's `t corner`) makes the
+//                 vertex point a·v + (1 − a)·(the rule above), a = min(1, s_v): a corner for as
+//                 many levels as s_v (the child vertex point gets s_v − 1, +∞ stays).
 //   child edges   the two halves of a parent edge get sharpness s − 1 (clamped at 0; +∞ stays);
 //                 edges inside a face are smooth.
 // Boundaries are therefore cubic B-spline curves of the boundary polygon with corners (vertices of
