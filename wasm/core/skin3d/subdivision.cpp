@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace splinekit::skin3d {
 
@@ -15,20 +16,39 @@ double decay(double s) { return std::isinf(s) ? s : std::max(0.0, s - 1.0); }
 
 // Builds a row-major sparse matrix row by row (rows in order): a row's terms are summed per column
 // as they come (slot[c] = where column c sits if it is already in the current row), sorted by
-// column when the row ends. Cheaper than triplets on the finest level's millions of entries.
+// column when the row ends. Cheaper than triplets on the finest level's millions of entries; the
+// arrays only grow in the rare grow() (capacity from the caller's estimate), so add() stays small
+// enough to inline.
 struct Rows {
-  std::vector<int> outer{0}, inner, slot;
-  std::vector<double> values;
-  explicit Rows(int cols) : slot(size_t(cols), -1) {}
+  std::vector<int> outer{0}, slot;
+  std::unique_ptr<int[]> inner;
+  std::unique_ptr<double[]> values;
+  int size = 0, row_start = 0, capacity = 0;
+  Rows(int cols, size_t estimate) : slot(size_t(cols), -1) { reserve(int(std::max<size_t>(estimate, 16))); }
+  void reserve(int n) {
+    std::unique_ptr<int[]> i(new int[size_t(n)]);
+    std::unique_ptr<double[]> v(new double[size_t(n)]);
+    std::copy(inner.get(), inner.get() + size, i.get());
+    std::copy(values.get(), values.get() + size, v.get());
+    inner.swap(i), values.swap(v), capacity = n;
+  }
+#if defined(__GNUC__)
+  __attribute__((noinline))
+#endif
+  void
+  grow() {
+    reserve(2 * capacity);
+  }
   void add(int col, double w) {
     if (w == 0.0) return;
     const int at = slot[col];
-    if (at >= outer.back()) {  // earlier rows' positions are all below the current row's start
+    if (at >= row_start) {  // earlier rows' positions are all below the current row's start
       values[at] += w;
-    } else {
-      slot[col] = int(inner.size());
-      inner.push_back(col), values.push_back(w);
+      return;
     }
+    if (size == capacity) grow();
+    slot[col] = size, inner[size] = col, values[size] = w;
+    ++size;
   }
   // w · (face point of f) = w/n · Σ face vertices.
   void add_face(const PolyMesh& m, int f, double w) {
@@ -37,18 +57,18 @@ struct Rows {
   }
   void end_row() {
     // Insertion sort by column (rows hold a handful of distinct columns).
-    const int begin = outer.back(), end = int(inner.size());
-    for (int i = begin + 1; i < end; ++i)
-      for (int j = i; j > begin && inner[j - 1] > inner[j]; --j)
+    for (int i = row_start + 1; i < size; ++i)
+      for (int j = i; j > row_start && inner[j - 1] > inner[j]; --j)
         std::swap(inner[j - 1], inner[j]), std::swap(values[j - 1], values[j]);
-    outer.push_back(end);
+    outer.push_back(size);
+    row_start = size;
   }
   void to_matrix(int cols, RowSparse& S) const {
     S.resize(int(outer.size()) - 1, cols);
-    S.resizeNonZeros(Eigen::Index(inner.size()));
+    S.resizeNonZeros(Eigen::Index(size));
     std::copy(outer.begin(), outer.end(), S.outerIndexPtr());
-    std::copy(inner.begin(), inner.end(), S.innerIndexPtr());
-    std::copy(values.begin(), values.end(), S.valuePtr());
+    std::copy(inner.get(), inner.get() + size, S.innerIndexPtr());
+    std::copy(values.get(), values.get() + size, S.valuePtr());
   }
 };
 
@@ -95,10 +115,8 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
   const int nv = p.vertex_count, ne = p.edge_count(), nf = p.face_count();
   const int edge0 = nv, face0 = nv + ne;
   // Rows in child order: vertex points, edge points, face points.
-  Rows rows(nv);
+  Rows rows(nv, size_t(nv) * 10 + size_t(ne) * 6 + p.face_vertices.size());
   rows.outer.reserve(size_t(nv + ne + nf) + 1);
-  rows.inner.reserve(size_t(nv) * 10 + size_t(ne) * 6 + p.face_vertices.size());
-  rows.values.reserve(rows.inner.capacity());
 
   // Vertex points.
   for (int v = 0; v < nv; ++v) {
@@ -187,7 +205,7 @@ void refine_once(const PolyMesh& p, RowSparse& S, PolyMesh& child, bool with_top
 // ---------------------------------------------------------------------------------------------
 
 void limit_stencils(const PolyMesh& p, RowSparse& L) {
-  Rows rows(p.vertex_count);
+  Rows rows(p.vertex_count, size_t(p.vertex_count) * 10);
   for (int v = 0; v < p.vertex_count; ++v) {
     const int e_begin = p.vertex_edge_start[v], e_end = p.vertex_edge_start[v + 1];
     const int n = e_end - e_begin;
