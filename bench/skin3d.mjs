@@ -57,7 +57,7 @@ export function skin3dSpeed(data) {
     { label: 'spot refined twice', file: 'spot_control_mesh.obj', refine: 2, runs: 3 },
     { label: 'car', file: 'catmark_car.obj', refine: 0, runs: 3 },
     { label: 'car refined once', file: 'catmark_car.obj', refine: 1, runs: 3 },
-    { label: 'car refined twice', file: 'catmark_car.obj', refine: 2, runs: 1 },
+    { label: 'car refined twice', file: 'catmark_car.obj', refine: 2, runs: 3 },
   ];
   const rows = [];
   for (const c of cases) {
@@ -138,11 +138,11 @@ ${date}, ${machine}; 1-minute load average ${load} (other jobs shared the 2 core
 4 handles (farthest-point sampling of the cage vertices), Shepard weights, level K = 3, one random
 pose (rotations up to ±60° about random axes through the handles, shifts up to 5% of the
 diagonal). Refined cages are the shared cage's level-1 or level-2 Catmull-Clark refinement used as
-a new cage (\`refineCage\`, crease sharpness decayed accordingly). Precompute = subdivision matrix,
-weights, Â = Mᵀ D M, its sparse LDLᵀ and O; update = O × the 4·#H × 3 stacked transforms into a
-preallocated buffer (median of 200 after warm-up); "naive" = linear blend skinning of the cage
-vertices, for comparison. M is stored as its per-level factors S₃ S₂ S₁ (the memory given);
-O is #cage × 4·#H doubles.
+a new cage (\`refineCage\`, crease sharpness decayed accordingly). Precompute (median of 3 runs) =
+subdivision matrix, weights, Â = Mᵀ D M and Ŵ = Mᵀ G, a sparse Cholesky of Â and O; update = O × the
+4·#H × 3 stacked transforms into a preallocated buffer (median of 200 after warm-up); "naive" =
+linear blend skinning of the cage vertices, for comparison. M is stored as its per-level factors
+S₃ S₂ S₁ (the memory given); O is #cage × 4·#H doubles.
 
 | cage | cage vertices | creases | refined vertices | precompute ms | update ms | naive ms | M MiB | O MiB | bytes allocated by 1,000 updates |
 |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
@@ -150,10 +150,18 @@ ${speed}
 
 Budgets (issue 18): a ~4k-vertex cage ≤ 1 s precompute and ≤ 0.1 ms per update; a ~20k-vertex
 cage ≤ 3 s and ≤ 0.5 ms (paper, Table 2: rabbit, 4,139 vertices, 9 s and 0.2 ms native). This run:
-${verdict(small, 1000, 0.1)}; ${verdict(large, 3000, 0.5)}. Updates allocate nothing. Where the
-precompute goes (native perf profile of the car refined once, setup + precompute): ~35% the sparse
-products of Â = S₁ᵀ(S₂ᵀ(S₃ᵀ D S₃)S₂)S₁ and their transposes over the ~64× refined vertices, ~15%
-building the S_j, ~7% Ŵ = Mᵀ G, ~5% the LDLᵀ and its 4·#H solves, the rest memory traffic.
+${verdict(small, 1000, 0.1)}; ${verdict(large, 3000, 0.5)}. Updates allocate nothing.
+
+How Â and Ŵ are built (\`Subdivision::normal_equations\`): every level-3 vertex is owned by one
+cage face, and a face's rows of M are dense over the few cage vertices that reach them (its 1-ring),
+so Â = Σ_f M_fᵀ D_f M_f is summed from small dense blocks, each obtained by multiplying out the
+chain S₃ S₂ S₁ restricted to the vertices in between; Ŵ's S₃ᵀ G goes through the same rows of S₃.
+The products S₁ᵀ(S₂ᵀ(S₃ᵀ D S₃)S₂)S₁ over the ~64× refined vertices (with them the 25k cage's
+precompute took 6.5 s, load 3.3) are kept only as the tests' reference; Â is factored by the 2D
+skin's supernodal Cholesky in AMD order, not Eigen's SimplicialLDLT. Where the precompute goes now (native perf profile
+of the car refined twice): ~27% Â and Ŵ, ~24% building the S_j and the level-1 and level-2
+topology, ~5% the rest surface M·P, ~9% ordering, factorization and the 4·#H solves, ~2% Shepard
+weights, ~12% the kernel's page faults on fresh memory, the rest copies and bookkeeping.
 
 Accuracy on every shared cage, K = 3, 5 random poses each with 4 and 8 handles (as above): the
 area-weighted RMS distance of the level-3 surface to the target (the skinned refined rest

@@ -57,7 +57,7 @@ export { buildDomain, type Domain, type DomainOptions } from './skin/domain.js';
 export { SkinWeights, type BbwOptions, type DomainWeightKind, type WeightMesh } from './skin/weights.js';
 export { computeDomainWeights, domainWeights, outlineSamples, type DomainWeightsInput } from './skin/auto-weights.js';
 export { animatedSVG, interpolateMatrix, keyframesAt, poseAt, type AnimationOptions, type Keyframe } from './skin/animation.js';
-export { parseCage, cageToOBJ, type Cage, type CageCrease } from './skin3d/cage.js';
+export { parseCage, cageToOBJ, type Cage, type CageCorner, type CageCrease } from './skin3d/cage.js';
 export {
   SubdivisionRig,
   refineCage,

@@ -10,12 +10,13 @@ const usage = `usage: splinekit skin3d <cage.obj> --handles <handles.json> --pos
 
 Deforms a Catmull-Clark cage by linear blend skinning of its subdivision surface and fits the cage
 so that its level-K surface follows the skinned one (Liu, Jacobson & Gingold 2014). cage.obj: an OBJ
-with polygon faces and OpenSubdiv crease tags ("t crease 2/1/0 v0 v1 sharpness"). handles.json:
+with polygon faces and OpenSubdiv crease and corner tags ("t crease 2/1/0 v0 v1 sharpness",
+"t corner 1/1/0 v sharpness"). handles.json:
 {"handles":[{"x":..,"y":..,"z":..},...]}; pose.json: {"transforms":[[a11,a12,a13,t1, a21,a22,a23,t2,
 a31,a32,a33,t3],...]}, one row-major 3×4 matrix per handle (x' = A x + t). --levels: 1..4 (default
 3). --method naive skins the cage vertices themselves instead of fitting. Prints (or writes to
 --json) {"cage":[[x,y,z],...],"stats":{...}} with the posed cage's vertices in file order; -o
-writes the posed cage as OBJ with its crease tags.`;
+writes the posed cage as OBJ with its crease and corner tags.`;
 
 /** Cage files beyond this size are refused before reading. */
 const MAX_CAGE_BYTES = 256 * 2 ** 20;

@@ -71,12 +71,17 @@ export interface Skin3dRigHandle extends EmbindObject {
   faceIndicesIn(): Int32Array;
   creaseEdgesIn(): Int32Array;
   creaseSharpnessIn(): Float64Array;
+  resizeCorners(corners: number): void;
+  cornerVerticesIn(): Int32Array;
+  cornerSharpnessIn(): Float64Array;
   setup(levels: number, handleCount: number): number;
   refineCage(levels: number): number;
   refinedCagePositions(): Float64Array;
   refinedCageQuads(): Int32Array;
   refinedCageCreaseEdges(): Int32Array;
   refinedCageCreaseSharpness(): Float64Array;
+  refinedCageCornerVertices(): Int32Array;
+  refinedCageCornerSharpness(): Float64Array;
   handles(): Float64Array;
   useShepard(power: number): void;
   bbw(level: number, maxIterations: number, multiplierTolerance: number): number;

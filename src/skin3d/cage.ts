@@ -1,7 +1,8 @@
 /**
  * Quad (or any polygon) cages for subdivision-surface skinning: read from and written to Wavefront
- * OBJ with OpenSubdiv's crease tags (`t crease 2/1/0 v0 v1 sharpness`, 0-based vertex indices, as
- * in OpenSubdiv's regression shapes).
+ * OBJ with OpenSubdiv's crease and corner tags (`t crease 2/1/0 v0 v1 sharpness`,
+ * `t corner n/1/0 v1 … vn sharpness` or `n/n/0` with one sharpness per vertex; 0-based vertex indices,
+ * as in OpenSubdiv's regression shapes).
  */
 import { SplinekitError } from '../core/errors.js';
 
@@ -15,6 +16,14 @@ export interface CageCrease {
   sharpness: number;
 }
 
+/** One corner tag: vertex v (0-based) made a corner (OpenSubdiv's vertex sharpness). */
+export interface CageCorner {
+  /** The vertex (0-based). */
+  v: number;
+  /** Levels the vertex stays a corner (decays by one per level; a fraction blends); `Infinity` never decays. */
+  sharpness: number;
+}
+
 /** A polygon cage: flat arrays, vertices in file order. */
 export interface Cage {
   /** x,y,z per vertex (3 per vertex), in file order. */
@@ -25,6 +34,8 @@ export interface Cage {
   faceIndices: Uint32Array;
   /** Crease tags (OpenSubdiv convention). */
   creases: CageCrease[];
+  /** Corner tags (OpenSubdiv `t corner`), if any. */
+  corners?: CageCorner[];
 }
 
 function fail(name: string, line: number, message: string): never {
@@ -38,10 +49,10 @@ function parseSharpness(text: string | undefined): number {
 
 /**
  * Reads a cage from OBJ text: `v x y z`, `f` with `v`, `v/vt`, `v//vn`, `v/vt/vn` corners (1-based or
- * negative indices), and `t crease 2/1/0 v0 v1 sharpness` tags; other statements are skipped. Throws
- * a SplinekitError naming the problem: a non-finite coordinate, a face with fewer than 3 or a repeated
- * vertex, an index out of range, a non-manifold edge (shared by more than two faces), a bad crease
- * tag, or no faces.
+ * negative indices), `t crease 2/1/0 v0 v1 sharpness` and `t corner n/1/0 v1 … vn sharpness` (or
+ * `n/n/0`) tags; other statements are skipped. Throws a SplinekitError naming the problem: a
+ * non-finite coordinate, a face with fewer than 3 or a repeated vertex, an index out of range, a
+ * non-manifold edge (shared by more than two faces), a bad crease or corner tag, or no faces.
  *
  * @param objText the OBJ file's text
  * @param name names the file in errors (default 'cage.obj')
@@ -49,6 +60,7 @@ function parseSharpness(text: string | undefined): number {
 export function parseCage(objText: string, name = 'cage.obj'): Cage {
   const positions: number[] = [], sizes: number[] = [], indices: number[] = [];
   const creases: (CageCrease & { line: number })[] = [];
+  const corners: (CageCorner & { line: number })[] = [];
   const lines = objText.split(/\r?\n/);
   for (let l = 0; l < lines.length; l++) {
     const tokens = lines[l].trim().split(/\s+/);
@@ -76,6 +88,14 @@ export function parseCage(objText: string, name = 'cage.obj'): Cage {
         fail(name, l + 1, `expected "t crease 2/1/0 v0 v1 sharpness" with 0-based vertices and a positive sharpness, got "${lines[l].trim()}"`);
       }
       creases.push({ a, b, sharpness, line: l + 1 });
+    } else if (tag === 't' && tokens[1] === 'corner') {
+      const counts = /^(\d+)\/(\d+)\/0$/.exec(tokens[2] ?? '');
+      const n = counts ? Number(counts[1]) : 0, m = counts ? Number(counts[2]) : 0;
+      const vertices = tokens.slice(3, 3 + n).map(Number), values = tokens.slice(3 + n).map(parseSharpness);
+      if (!counts || n < 1 || (m !== 1 && m !== n) || tokens.length !== 3 + n + m || !vertices.every(Number.isInteger) || !values.every((s) => s > 0)) {
+        fail(name, l + 1, `expected "t corner n/1/0 v1 … vn sharpness" (or n/n/0, one sharpness per vertex) with 0-based vertices and positive sharpness, got "${lines[l].trim()}"`);
+      }
+      vertices.forEach((v, k) => corners.push({ v, sharpness: values[m === 1 ? 0 : k], line: l + 1 }));
     }
   }
   const nv = positions.length / 3;
@@ -98,17 +118,22 @@ export function parseCage(objText: string, name = 'cage.obj'): Cage {
       fail(name, c.line, `crease ${c.a} ${c.b} (0-based) is not an edge of the cage`);
     }
   }
-  return {
+  for (const c of corners) {
+    if (c.v < 0 || c.v >= nv) fail(name, c.line, `corner vertex ${c.v} (0-based) is outside 0..${nv - 1}`);
+  }
+  const cage: Cage = {
     positions: Float64Array.from(positions),
     faceSizes: Uint32Array.from(sizes),
     faceIndices: Uint32Array.from(indices),
     creases: creases.map(({ a, b, sharpness }) => ({ a, b, sharpness })),
   };
+  if (corners.length > 0) cage.corners = corners.map(({ v, sharpness }) => ({ v, sharpness }));
+  return cage;
 }
 
 /**
  * Writes a cage as OBJ: its vertices (or `positions`, e.g. a posed cage, 3 per vertex), its faces and
- * its crease tags (infinitely sharp as `inf`, which parseCage reads back).
+ * its crease and corner tags (infinitely sharp as `inf`, which parseCage reads back).
  */
 export function cageToOBJ(cage: Cage, positions: Float64Array = cage.positions): string {
   if (positions.length !== cage.positions.length) {
@@ -120,5 +145,6 @@ export function cageToOBJ(cage: Cage, positions: Float64Array = cage.positions):
     out.push(`f ${Array.from(cage.faceIndices.subarray(at, at + cage.faceSizes[f]), (v) => v + 1).join(' ')}`);
   }
   for (const c of cage.creases) out.push(`t crease 2/1/0 ${c.a} ${c.b} ${Number.isFinite(c.sharpness) ? c.sharpness : 'inf'}`);
+  for (const c of cage.corners ?? []) out.push(`t corner 1/1/0 ${c.v} ${Number.isFinite(c.sharpness) ? c.sharpness : 'inf'}`);
   return `${out.join('\n')}\n`;
 }

@@ -82,13 +82,19 @@ function cageHandle(cage: Cage): Skin3dRigHandle {
   h.faceIndicesIn().set(cage.faceIndices);
   const edges = h.creaseEdgesIn(), sharpness = h.creaseSharpnessIn();
   cage.creases.forEach((c, k) => ((edges[2 * k] = c.a), (edges[2 * k + 1] = c.b), (sharpness[k] = c.sharpness)));
+  const corners = cage.corners ?? [];
+  if (corners.length > 0) {
+    h.resizeCorners(corners.length);
+    const vertices = h.cornerVerticesIn(), cornerSharpness = h.cornerSharpnessIn();
+    corners.forEach((c, k) => ((vertices[k] = c.v), (cornerSharpness[k] = c.sharpness)));
+  }
   return h;
 }
 
 /**
  * The cage's level-`levels` Catmull-Clark refinement as a cage of its own: all quads, vertices in
- * the refinement's order (the cage's vertex points first), crease tags with their sharpness
- * decayed by `levels` (infinitely sharp ones kept). Subdividing it gives the same surface as
+ * the refinement's order (the cage's vertex points first), crease and corner tags with their
+ * sharpness decayed by `levels` (infinitely sharp ones kept). Subdividing it gives the same surface as
  * subdividing the original `levels` more times.
  */
 export function refineCage(cage: Cage, levels: number): Cage {
@@ -98,12 +104,15 @@ export function refineCage(cage: Cage, levels: number): Cage {
     checkStatus(h.refineCage(levels), 'skin3d', () => h.errorMessage());
     const quads = Uint32Array.from(h.refinedCageQuads());
     const edges = h.refinedCageCreaseEdges(), sharpness = h.refinedCageCreaseSharpness();
-    return {
+    const cornerVertices = h.refinedCageCornerVertices(), cornerSharpness = h.refinedCageCornerSharpness();
+    const refined: Cage = {
       positions: h.refinedCagePositions().slice(),
       faceSizes: new Uint32Array(quads.length / 4).fill(4),
       faceIndices: quads,
       creases: Array.from(sharpness, (s, k) => ({ a: edges[2 * k], b: edges[2 * k + 1], sharpness: s })),
     };
+    if (cornerVertices.length > 0) refined.corners = Array.from(cornerSharpness, (s, k) => ({ v: cornerVertices[k], sharpness: s }));
+    return refined;
   } finally {
     h.delete();
   }

@@ -179,6 +179,37 @@ test('refineCage: subdividing the refined cage once is subdividing the cage twic
   }
 });
 
+test('corner tags: parsed (n/1/0 and n/n/0), written back, kept by the rig and decayed by refineCage', () => {
+  const text = cageToOBJ(cube()) + 't corner 1/1/0 0 inf\nt corner 2/2/0 6 7 2 0.5\n';
+  const c = parseCage(text);
+  expect(c.corners).toEqual([{ v: 0, sharpness: Infinity }, { v: 6, sharpness: 2 }, { v: 7, sharpness: 0.5 }]);
+  expect(parseCage(cageToOBJ(c))).toEqual(c);
+  expect(parseCage(cageToOBJ(cube())).corners).toBeUndefined();
+  // Vertex 0 (infinitely sharp) stays on the cage vertex at level 3; vertex 6 (sharpness 2) does
+  // at level 2 but not at 3; untagged, both move.
+  const at = (cage: Cage, levels: number, v: number) => {
+    const rig = SubdivisionRig.create(cage, { handles: [0, 0, 0], levels });
+    try {
+      return Array.from(rig.restRefined.subarray(3 * v, 3 * v + 3));
+    } finally {
+      rig.dispose();
+    }
+  };
+  const P = (v: number) => Array.from(c.positions.subarray(3 * v, 3 * v + 3));
+  expect(at(c, 3, 0)).toEqual(P(0));
+  expect(at(c, 2, 6)).toEqual(P(6));
+  expect(maxDiff(at(c, 3, 6), P(6))).toBeGreaterThan(1e-3);
+  expect(maxDiff(at(cube(), 3, 0), P(0))).toBeGreaterThan(1e-3);
+  // refineCage: sharpness less one on the vertex points; 0.5 is gone after a level.
+  const once = refineCage(c, 1);
+  expect(once.corners).toEqual([{ v: 0, sharpness: Infinity }, { v: 6, sharpness: 1 }]);
+  expect(maxDiff(at(once, 2, 6), at(c, 3, 6))).toBeLessThan(1e-14);
+  const bad = (t: string) => () => parseCage(cageToOBJ(cube()) + t, 'x.obj');
+  expect(bad('t corner 1/1/0 0 0\n')).toThrow(/line 15: expected "t corner/);
+  expect(bad('t corner 2/1/0 0\n')).toThrow(/expected "t corner/);
+  expect(bad('t corner 1/1/0 8 1\n')).toThrow(/corner vertex 8 \(0-based\) is outside 0\.\.7/);
+});
+
 test('bad arguments throw and leave nothing behind; create/dispose does not leak; pose allocates nothing', () => {
   const c = cube();
   expect(() => SubdivisionRig.create(c, { handles: [0, 0] })).toThrow(/3 numbers per handle/);

@@ -3,7 +3,8 @@
 //
 // Flow (src/skin3d/rig.ts drives it): resize(vertices, faceIndices, faces, creases), fill
 // positionsIn(), faceSizesIn(), faceIndicesIn(), creaseEdgesIn() (2 per crease, 0-based) and
-// creaseSharpnessIn(); setup(levels, handleCount). Weights: write handles() then useShepard(power)
+// creaseSharpnessIn(), and with corner tags resizeCorners(n), cornerVerticesIn(),
+// cornerSharpnessIn(); setup(levels, handleCount). Weights: write handles() then useShepard(power)
 // or bbw(level, ...), or write refinedWeights() (and restrictWeights()) or cageWeights() (and
 // prolongateWeights()); then precompute(). Per frame: write transforms() (12 per handle), call
 // update(), read cage(). The per-frame calls allocate nothing, so views stay valid between them.
@@ -29,12 +30,20 @@ class Skin3dRigHandle {
     face_sizes_.assign(size_t(std::max(faces, 0)), 0);
     crease_edges_.assign(2 * size_t(std::max(creases, 0)), 0);
     crease_sharpness_.assign(size_t(std::max(creases, 0)), 0.0);
+    corner_vertices_.clear(), corner_sharpness_.clear();
   }
   val positionsIn() { return view_of(positions_); }
   val faceSizesIn() { return view_of(face_sizes_); }
   val faceIndicesIn() { return view_of(face_indices_); }
   val creaseEdgesIn() { return view_of(crease_edges_); }
   val creaseSharpnessIn() { return view_of(crease_sharpness_); }
+  // Corner tags (after resize, which clears them): 0-based vertices and their sharpness.
+  void resizeCorners(int corners) {
+    corner_vertices_.assign(size_t(std::max(corners, 0)), 0);
+    corner_sharpness_.assign(size_t(std::max(corners, 0)), 0.0);
+  }
+  val cornerVerticesIn() { return view_of(corner_vertices_); }
+  val cornerSharpnessIn() { return view_of(corner_sharpness_); }
 
   int setup(int levels, int handle_count) {
     std::vector<Crease> creases(crease_sharpness_.size());
@@ -45,9 +54,10 @@ class Skin3dRigHandle {
     if (total != int(face_indices_.size()))
       return fail("face sizes add up to " + std::to_string(total) + " indices, got " +
                   std::to_string(face_indices_.size()));
-    const std::string e =
-        rig_.setup(positions_.data(), int(positions_.size() / 3), face_sizes_.data(), int(face_sizes_.size()),
-                   face_indices_.data(), creases.data(), int(creases.size()), levels, handle_count);
+    const std::vector<Corner> corners = corner_tags();
+    const std::string e = rig_.setup(positions_.data(), int(positions_.size() / 3), face_sizes_.data(),
+                                     int(face_sizes_.size()), face_indices_.data(), creases.data(), int(creases.size()),
+                                     levels, handle_count, corners.data(), int(corners.size()));
     if (!e.empty()) return fail(e);
     handles_.assign(3 * size_t(handle_count), 0.0);
     transforms_.assign(12 * size_t(handle_count), 0.0);
@@ -71,6 +81,8 @@ class Skin3dRigHandle {
     for (size_t k = 0; k < creases.size(); ++k)
       creases[k] = {crease_edges_[2 * k], crease_edges_[2 * k + 1], crease_sharpness_[k]};
     if (std::string e = apply_creases(creases.data(), int(creases.size()), cage); !e.empty()) return fail(e);
+    const std::vector<Corner> corners = corner_tags();
+    if (std::string e = apply_corners(corners.data(), int(corners.size()), cage); !e.empty()) return fail(e);
     Subdivision s;
     s.build(cage, levels, true);
     const PolyMesh& fine = s.refined_mesh();
@@ -84,12 +96,19 @@ class Skin3dRigHandle {
         out_crease_edges_.insert(out_crease_edges_.end(), {fine.edge_vertices[2 * e], fine.edge_vertices[2 * e + 1]});
         out_crease_sharpness_.push_back(fine.edge_sharpness[e]);
       }
+    out_corner_vertices_.clear();
+    out_corner_sharpness_.clear();
+    for (int v = 0; v < fine.vertex_count; ++v)
+      if (fine.vertex_sharpness[v] > 0)
+        out_corner_vertices_.push_back(v), out_corner_sharpness_.push_back(fine.vertex_sharpness[v]);
     return kOk;
   }
   val refinedCagePositions() { return view_of(out_positions_); }
   val refinedCageQuads() { return view_of(out_faces_); }
   val refinedCageCreaseEdges() { return view_of(out_crease_edges_); }
   val refinedCageCreaseSharpness() { return view_of(out_crease_sharpness_); }
+  val refinedCageCornerVertices() { return view_of(out_corner_vertices_); }
+  val refinedCageCornerSharpness() { return view_of(out_corner_sharpness_); }
 
   val handles() { return view_of(handles_); }
   void useShepard(double power) { rig_.use_shepard(handles_.data(), power); }
@@ -142,6 +161,11 @@ class Skin3dRigHandle {
     if (source == 1) return rig_.naive(transforms_.data());
     return cage_in_.data();
   }
+  std::vector<Corner> corner_tags() const {
+    std::vector<Corner> corners(corner_sharpness_.size());
+    for (size_t k = 0; k < corners.size(); ++k) corners[k] = {corner_vertices_[k], corner_sharpness_[k]};
+    return corners;
+  }
   int fail(const std::string& e) {
     error_ = e;
     return kInvalidInput;
@@ -149,8 +173,10 @@ class Skin3dRigHandle {
   SubdivisionRig rig_;
   std::vector<double> positions_, crease_sharpness_, handles_, transforms_, cage_in_, per_vertex_;
   std::vector<int> face_sizes_, face_indices_, crease_edges_;
-  std::vector<double> out_positions_, out_crease_sharpness_;
-  std::vector<int> out_faces_, out_crease_edges_;
+  std::vector<int> corner_vertices_;
+  std::vector<double> corner_sharpness_;
+  std::vector<double> out_positions_, out_crease_sharpness_, out_corner_sharpness_;
+  std::vector<int> out_faces_, out_crease_edges_, out_corner_vertices_;
   std::string error_;
 };
 
@@ -167,12 +193,17 @@ EMSCRIPTEN_BINDINGS(splinekit_skin3d) {
       .function("faceIndicesIn", &Skin3dRigHandle::faceIndicesIn)
       .function("creaseEdgesIn", &Skin3dRigHandle::creaseEdgesIn)
       .function("creaseSharpnessIn", &Skin3dRigHandle::creaseSharpnessIn)
+      .function("resizeCorners", &Skin3dRigHandle::resizeCorners)
+      .function("cornerVerticesIn", &Skin3dRigHandle::cornerVerticesIn)
+      .function("cornerSharpnessIn", &Skin3dRigHandle::cornerSharpnessIn)
       .function("setup", &Skin3dRigHandle::setup)
       .function("refineCage", &Skin3dRigHandle::refineCage)
       .function("refinedCagePositions", &Skin3dRigHandle::refinedCagePositions)
       .function("refinedCageQuads", &Skin3dRigHandle::refinedCageQuads)
       .function("refinedCageCreaseEdges", &Skin3dRigHandle::refinedCageCreaseEdges)
       .function("refinedCageCreaseSharpness", &Skin3dRigHandle::refinedCageCreaseSharpness)
+      .function("refinedCageCornerVertices", &Skin3dRigHandle::refinedCageCornerVertices)
+      .function("refinedCageCornerSharpness", &Skin3dRigHandle::refinedCageCornerSharpness)
       .function("handles", &Skin3dRigHandle::handles)
       .function("useShepard", &Skin3dRigHandle::useShepard)
       .function("bbw", &Skin3dRigHandle::bbw)

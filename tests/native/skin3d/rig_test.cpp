@@ -170,6 +170,9 @@ TEST(SubdivisionRig, RejectsBadInput) {
   const double W[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
   EXPECT_NE(rig.setup(W, 4, sizes, 1, quad, nullptr, 0, 5, 1).find("levels"), std::string::npos);
   EXPECT_NE(rig.setup(W, 4, sizes, 1, quad, nullptr, 0, 2, 0).find("handle"), std::string::npos);
+  const Corner far{4, 1.0};
+  EXPECT_NE(rig.setup(W, 4, sizes, 1, quad, nullptr, 0, 2, 1, &far, 1).find("corner tag 1 names vertex 4"),
+            std::string::npos);
   ASSERT_EQ(rig.setup(W, 4, sizes, 1, quad, nullptr, 0, 2, 1), "");
   rig.refined_weights()[0] = NAN;
   EXPECT_NE(rig.precompute().find("non-finite"), std::string::npos);

@@ -258,6 +258,47 @@ TEST(Subdivision, SemiSharpCreasesDecayByOnePerLevel) {
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(rh[3 * row + a], 0.5 * (rf[3 * row + a] + rs[3 * row + a]), 1e-15);
 }
 
+TEST(Subdivision, CornerTagsKeepTheVertexForTheirSharpness) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const Cage cube = read_cage("cube_quad.obj");
+  auto with_corner = [&](double s) {
+    Cage c = cube;
+    c.corners.push_back({0, s});
+    return c;
+  };
+  const P3 v0 = {cube.V[0], cube.V[1], cube.V[2]};
+  // Infinitely sharp: vertex 0's descendant stays on it at every level, and so does its limit.
+  for (int k = 1; k <= 3; ++k) EXPECT_EQ(dist(refine(with_corner(inf), k).data(), v0), 0.0) << "level " << k;
+  Subdivision limit;
+  limit.build(with_corner(inf).mesh(), 2, true);
+  std::vector<double> fine(3 * size_t(limit.refined_vertex_count()));
+  limit.apply(cube.V.data(), 3, fine.data());
+  RowSparse L;
+  limit_stencils(limit.refined_mesh(), L);
+  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> F(fine.data(),
+                                                                                limit.refined_vertex_count(), 3);
+  const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> lim = L * F;
+  EXPECT_EQ(dist(lim.data(), v0), 0.0);
+  // Sharpness 2: a corner for two levels (exactly v), smooth from the third (it moves inward).
+  EXPECT_EQ(dist(refine(with_corner(2.0), 2).data(), v0), 0.0);
+  EXPECT_GT(dist(refine(with_corner(2.0), 3).data(), v0), 1e-3);
+  // Sharpness ½: level 1's vertex point halfway between v and the smooth one; nothing else moves.
+  const std::vector<double> half = refine(with_corner(0.5), 1), smooth = refine(cube, 1);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(half[a], 0.5 * (v0[a] + smooth[a]), 1e-15);
+  for (size_t i = 3; i < half.size(); ++i) EXPECT_EQ(half[i], smooth[i]) << "coordinate " << i;
+  // The tag decays on vertex 0's descendants: 2 → 1 → 0.
+  Subdivision two;
+  two.build(with_corner(2.0).mesh(), 1, true);
+  EXPECT_EQ(two.refined_mesh().vertex_sharpness[0], 1.0);
+  for (size_t v = 1; v < two.refined_mesh().vertex_sharpness.size(); ++v)
+    EXPECT_EQ(two.refined_mesh().vertex_sharpness[v], 0.0);
+  // Bad tags.
+  PolyMesh m = cube.mesh();
+  const Corner outside{8, 1.0}, zero{0, 0.0};
+  EXPECT_NE(apply_corners(&outside, 1, m).find("outside 0..7"), std::string::npos);
+  EXPECT_NE(apply_corners(&zero, 1, m).find("positive"), std::string::npos);
+}
+
 TEST(Subdivision, CarKeepsItsSharpEdges) {
   // The car's crease tags (sharpness ≥ 3 after 3 levels... or infinitely sharp) keep the vertex
   // points of crease vertices on the crease: a crease vertex with two sharp edges follows the

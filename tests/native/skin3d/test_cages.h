@@ -17,6 +17,7 @@ struct Cage {
   std::vector<double> V;  // #V by 3
   std::vector<int> sizes, indices;
   std::vector<Crease> creases;
+  std::vector<Corner> corners;
   int nv() const { return int(V.size() / 3); }
   int nf() const { return int(sizes.size()); }
   PolyMesh mesh() const {
@@ -25,6 +26,8 @@ struct Cage {
     if (!e.empty()) throw std::runtime_error(e);
     const std::string c = apply_creases(creases.data(), int(creases.size()), m);
     if (!c.empty()) throw std::runtime_error(c);
+    const std::string k = apply_corners(corners.data(), int(corners.size()), m);
+    if (!k.empty()) throw std::runtime_error(k);
     return m;
   }
 };

@@ -96,6 +96,7 @@ std::string build_topology(PolyMesh& m) {
   }
   const int ne = int(m.edge_vertices.size()) / 2;
   m.edge_sharpness.assign(size_t(ne), 0.0);
+  m.vertex_sharpness.assign(size_t(nv), 0.0);
   for (int e = 0; e < ne; ++e)
     if (m.boundary_edge(e)) m.edge_sharpness[e] = std::numeric_limits<double>::infinity();
 
@@ -134,6 +135,20 @@ std::string apply_creases(const Crease* creases, int crease_count, PolyMesh& m) 
       return "crease tag " + std::to_string(k + 1) + " names vertices " + std::to_string(c.a) + " " +
              std::to_string(c.b) + " (0-based, as tags count), which are not joined by an edge of the cage";
     if (!m.boundary_edge(e)) m.edge_sharpness[e] = c.sharpness;
+  }
+  return "";
+}
+
+std::string apply_corners(const Corner* corners, int corner_count, PolyMesh& m) {
+  for (int k = 0; k < corner_count; ++k) {
+    const Corner& c = corners[k];
+    if (std::isnan(c.sharpness) || c.sharpness <= 0)
+      return "corner tag " + std::to_string(k + 1) + " (vertex " + std::to_string(c.v) + ") has sharpness " +
+             std::to_string(c.sharpness) + ", expected a positive number";
+    if (c.v < 0 || c.v >= m.vertex_count)
+      return "corner tag " + std::to_string(k + 1) + " names vertex " + std::to_string(c.v) +
+             " (0-based, as tags count), outside 0.." + std::to_string(m.vertex_count - 1);
+    m.vertex_sharpness[c.v] = c.sharpness;
   }
   return "";
 }

@@ -19,6 +19,12 @@ struct Crease {
   double sharpness = 0;
 };
 
+// One corner tag (OpenSubdiv's `t corner`): vertex v and its sharpness (> 0, +∞ allowed).
+struct Corner {
+  int v = 0;
+  double sharpness = 0;
+};
+
 struct PolyMesh {
   // ---- Faces (input) ----------------------------------------------------------------------------
   int vertex_count = 0;            // #V
@@ -26,10 +32,11 @@ struct PolyMesh {
   std::vector<int> face_vertices;  // concatenated vertex indices of every face
 
   // ---- Edges (build_topology) -------------------------------------------------------------------
-  std::vector<int> edge_vertices;      // #E by 2: endpoints (smaller index first)
-  std::vector<int> edge_faces;         // #E by 2: incident faces, −1 for the missing one of a boundary edge
-  std::vector<double> edge_sharpness;  // #E: 0 smooth, > 0 crease (+∞ on the boundary)
-  std::vector<int> corner_edge;        // per face corner c: the edge from vertex c to the next corner's
+  std::vector<int> edge_vertices;        // #E by 2: endpoints (smaller index first)
+  std::vector<int> edge_faces;           // #E by 2: incident faces, −1 for the missing one of a boundary edge
+  std::vector<double> edge_sharpness;    // #E: 0 smooth, > 0 crease (+∞ on the boundary)
+  std::vector<int> corner_edge;          // per face corner c: the edge from vertex c to the next corner's
+  std::vector<double> vertex_sharpness;  // #V: 0, or a corner tag's sharpness (the vertex is a corner)
 
   // ---- Vertex adjacency (build_topology) ---------------------------------------------------------
   std::vector<int> vertex_edge_start, vertex_edges;  // CSR: edges incident to each vertex
@@ -53,7 +60,8 @@ struct PolyMesh {
 std::string make_poly_mesh(int vertex_count, const int* face_sizes, int face_count, const int* face_indices,
                            PolyMesh& mesh);
 
-// Finds the edges and the vertex adjacency of mesh's faces (all sharpness 0, boundary +∞).
+// Finds the edges and the vertex adjacency of mesh's faces (all sharpness 0, boundary +∞; vertex
+// sharpness 0).
 // Returns "" or a message naming a non-manifold edge.
 std::string build_topology(PolyMesh& mesh);
 
@@ -61,6 +69,11 @@ std::string build_topology(PolyMesh& mesh);
 // edge stays +∞). Returns "" or a message naming a tag whose edge is not in the mesh or whose
 // sharpness is not positive.
 std::string apply_creases(const Crease* creases, int crease_count, PolyMesh& mesh);
+
+// Applies corner tags to a mesh with edges: vertex v gets the tag's sharpness (OpenSubdiv's vertex
+// sharpness: s levels as a corner, decaying by one per level; +∞ stays a corner). Returns "" or a
+// message naming a tag whose vertex is out of range or whose sharpness is not positive.
+std::string apply_corners(const Corner* corners, int corner_count, PolyMesh& mesh);
 
 // The edge between vertices a and b, or −1.
 int find_edge(const PolyMesh& mesh, int a, int b);

@@ -1,12 +1,13 @@
 #include "rig.h"
 
 #include <Eigen/Geometry>
-#include <Eigen/SparseCholesky>
+#include <Eigen/OrderingMethods>
 #include <algorithm>
 #include <cmath>
 
 #include "common/geometry.h"
 #include "skin/shepard.h"
+#include "skin/supernodal_cholesky.h"
 
 namespace splinekit::skin3d {
 
@@ -20,6 +21,30 @@ bool finite(const std::vector<double>& v) {
 
 Vec3 vec3_at(const double* xyz, int k) { return {xyz[3 * size_t(k)], xyz[3 * size_t(k) + 1], xyz[3 * size_t(k) + 2]}; }
 
+// Both triangles of the symmetric matrix whose lower triangle is L, rows and columns renumbered:
+// entry (r, c) of L goes to (position[r], position[c]) and its mirror.
+Eigen::SparseMatrix<double> permuted_full(const Eigen::SparseMatrix<double>& L, const std::vector<int>& position) {
+  const int n = int(L.rows());
+  std::vector<int> outer(size_t(n) + 1, 0);
+  for (int c = 0; c < n; ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(L, c); it; ++it) {
+      ++outer[position[c] + 1];
+      if (it.row() != c) ++outer[position[it.row()] + 1];
+    }
+  for (int c = 0; c < n; ++c) outer[c + 1] += outer[c];
+  Eigen::SparseMatrix<double> P(n, n);
+  P.resizeNonZeros(outer[n]);
+  std::copy(outer.begin(), outer.end(), P.outerIndexPtr());
+  std::vector<int> fill(outer.begin(), outer.end() - 1);
+  for (int c = 0; c < n; ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(L, c); it; ++it) {
+      const int pc = position[c], pr = position[it.row()];
+      P.innerIndexPtr()[fill[pc]] = pr, P.valuePtr()[fill[pc]++] = it.value();
+      if (it.row() != c) P.innerIndexPtr()[fill[pr]] = pc, P.valuePtr()[fill[pr]++] = it.value();
+    }
+  return P;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -28,7 +53,7 @@ Vec3 vec3_at(const double* xyz, int k) { return {xyz[3 * size_t(k)], xyz[3 * siz
 
 std::string SubdivisionRig::setup(const double* positions, int vertex_count, const int* face_sizes, int face_count,
                                   const int* face_indices, const Crease* creases, int crease_count, int levels,
-                                  int handle_count) {
+                                  int handle_count, const Corner* corners, int corner_count) {
   ready_ = false;
   if (levels < 1 || levels > 4) return "levels must be in 1..4, got " + std::to_string(levels);
   if (handle_count < 1) return "a rig needs at least one handle";
@@ -38,6 +63,7 @@ std::string SubdivisionRig::setup(const double* positions, int vertex_count, con
         return "vertex " + std::to_string(v + 1) + " has a non-finite coordinate";
   if (std::string e = make_poly_mesh(vertex_count, face_sizes, face_count, face_indices, mesh_); !e.empty()) return e;
   if (std::string e = apply_creases(creases, crease_count, mesh_); !e.empty()) return e;
+  if (std::string e = apply_corners(corners, corner_count, mesh_); !e.empty()) return e;
   handles_ = handle_count;
   rest_cage_.assign(positions, positions + 3 * size_t(vertex_count));
   subdivision_.build(mesh_, levels);
@@ -105,17 +131,21 @@ std::string SubdivisionRig::precompute() {
   const int R = refined_vertex_count(), H = handles_;
   const Eigen::Map<const Eigen::VectorXd> D(areas_.data(), R);
 
-  // Ŵ for every handle at once: G(r, 4i + c) = D_r w_ir [p_r; 1]_c, then Mᵀ G, level by level
-  // (G streamed row by row, never stored).
-  Eigen::MatrixXd B = subdivision_.apply_transpose(4 * H, [&](int r, double* g) {
-    const double* w = &refined_weights_[size_t(r) * H];
-    const double* p = &rest_refined_[3 * size_t(r)];
-    for (int i = 0; i < H; ++i) {
-      const double dw = D[r] * w[i];
-      g[4 * i] = dw * p[0], g[4 * i + 1] = dw * p[1], g[4 * i + 2] = dw * p[2], g[4 * i + 3] = dw;
-    }
-  });
-  Eigen::SparseMatrix<double> A = subdivision_.gram(D);
+  // Ŵ for every handle at once: G(r, 4i + c) = D_r w_ir [p_r; 1]_c, then Mᵀ G (G streamed row by
+  // row, never stored), in the same pass over the cage faces as Â = Mᵀ D M (its lower triangle, all
+  // the ordering and the factorization read).
+  Eigen::MatrixXd B;
+  Eigen::SparseMatrix<double> A = subdivision_.normal_equations(
+      D, 4 * H,
+      [&](int r, double* g) {
+        const double* w = &refined_weights_[size_t(r) * H];
+        const double* p = &rest_refined_[3 * size_t(r)];
+        for (int i = 0; i < H; ++i) {
+          const double dw = D[r] * w[i];
+          g[4 * i] = dw * p[0], g[4 * i + 1] = dw * p[1], g[4 * i + 2] = dw * p[2], g[4 * i + 3] = dw;
+        }
+      },
+      B);
 
   // M can be rank-deficient: on the cube (every vertex of valence 3) the checkerboard ±1 of the
   // cage vertices subdivides to 0. A small pull of each cage vertex toward its own blend,
@@ -132,10 +162,26 @@ std::string SubdivisionRig::precompute() {
       B(v, 4 * i + 2) += eps * w[i] * p[2], B(v, 4 * i + 3) += eps * w[i];
     }
   }
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-  if (ldlt.info() != Eigen::Success) return "internal: Mᵀ D M could not be factorized";
-  O_ = ldlt.solve(B);
-  if (ldlt.info() != Eigen::Success || !O_.allFinite()) return "internal: Mᵀ D M is singular for this cage";
+  // Sparse Cholesky: a fill-reducing order (AMD) of Â, then the supernodal factorization of the 2D
+  // skin's weights (dense fronts), one solve per column of B.
+  const int N = cage_vertex_count();
+  Eigen::AMDOrdering<int> amd;
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
+  amd(A, order);                             // reads the symmetric pattern of the stored (lower) triangle
+  const int* elim = order.indices().data();  // elim[k] = the cage vertex eliminated k-th
+  std::vector<int> position(static_cast<size_t>(N));
+  for (int k = 0; k < N; ++k) position[elim[k]] = k;
+  Eigen::SparseMatrix<double> P = permuted_full(A, position);
+  skin::SupernodalCholesky cholesky;
+  if (!cholesky.factorize(P)) return "internal: Mᵀ D M could not be factorized";
+  O_.resize(N, B.cols());
+  std::vector<double> y(static_cast<size_t>(N));
+  for (Eigen::Index c = 0; c < B.cols(); ++c) {
+    for (int k = 0; k < N; ++k) y[k] = B(elim[k], c);
+    cholesky.solve(y.data());
+    for (int k = 0; k < N; ++k) O_(elim[k], c) = y[k];
+  }
+  if (!O_.allFinite()) return "internal: Mᵀ D M is singular for this cage";
   ready_ = true;
   return "";
 }

@@ -40,11 +40,13 @@ class SubdivisionRig {
  public:
   // ---- Constructors ---------------------------------------------------------------------------
   // positions: #cage by 3; faces as sizes (#F) and concatenated 0-based indices; creases (0-based
-  // vertex pairs); levels in 1..4; handle_count ≥ 1. Builds the cage topology, the subdivision
-  // chain, the rest refined surface and its area weights. Returns "" or a message naming the
-  // problem (non-finite coordinate, face with a repeated vertex, non-manifold edge, bad crease).
+  // vertex pairs); levels in 1..4; handle_count ≥ 1; corner tags (0-based vertices). Builds the
+  // cage topology, the subdivision chain, the rest refined surface and its area weights. Returns
+  // "" or a message naming the problem (non-finite coordinate, face with a repeated vertex,
+  // non-manifold edge, bad crease or corner tag).
   std::string setup(const double* positions, int vertex_count, const int* face_sizes, int face_count,
-                    const int* face_indices, const Crease* creases, int crease_count, int levels, int handle_count);
+                    const int* face_indices, const Crease* creases, int crease_count, int levels, int handle_count,
+                    const Corner* corners = nullptr, int corner_count = 0);
 
   // ---- Weights (fill, then precompute) ----------------------------------------------------------
   // Per refined vertex (#refined by #H, row-major) — what the fit integrates — and per cage vertex

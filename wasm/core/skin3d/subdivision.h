@@ -18,6 +18,9 @@
 //                 A crease or corner whose sharp edges have mean sharpness s̄ < 1 is blended
 //                 (1 − s̄)·smooth + s̄·(crease or corner) — a simplification of OpenSubdiv's
 //                 fractional transition; infinitely sharp and boundary edges give s̄ ≥ 1.
+//                 A corner tag (vertex sharpness s_v > 0, OpenSubdiv's `t corner`) makes the
+//                 vertex point a·v + (1 − a)·(the rule above), a = min(1, s_v): a corner for as
+//                 many levels as s_v (the child vertex point gets s_v − 1, +∞ stays).
 //   child edges   the two halves of a parent edge get sharpness s − 1 (clamped at 0; +∞ stays);
 //                 edges inside a face are smooth.
 // Boundaries are therefore cubic B-spline curves of the boundary polygon with corners (vertices of
@@ -71,7 +74,24 @@ class Subdivision {
   // Mᵀ · G (#cage by cols) for the #refined by cols matrix G given row by row: row(r, g) writes
   // row r of G into g (cols values). G is never stored: each row goes straight through S_kᵀ.
   Eigen::MatrixXd apply_transpose(int cols, const std::function<void(int, double*)>& row) const;
-  // Mᵀ D M for the diagonal D (#refined), as a #cage by #cage sparse matrix, level by level.
+  // The lower triangle (column-major, diagonal included) of Mᵀ D M for the diagonal D (#refined),
+  // a #cage by #cage sparse matrix: what the rig factorizes. Assembled from small dense blocks,
+  // one per cage face: each level-k vertex is owned by the first cage face whose level-k quads
+  // contain it (vertices of no quad, i.e. descendants of cage vertices no face uses, form groups
+  // of their own), so Mᵀ D M = Σ_f M_fᵀ D_f M_f over the rows M_f of the vertices f owns. M_f is
+  // dense over the few cage vertices C_f that reach them (a face's 1-ring): the chain restricted
+  // to the vertices in between, S_k[R_f, ·] ⋯ S_1[·, C_f], multiplied out into dense rows. The
+  // product of the whole chain over the finest level (gram below) is never formed.
+  Eigen::SparseMatrix<double> gram_lower(const Eigen::VectorXd& D) const;
+  // The rig's normal equations in one pass: returns gram_lower(D) and writes MtG = Mᵀ G (#cage by
+  // width) for G given row by row as in apply_transpose (with width = 0, MtG is left alone). Each
+  // group's rows of G go through its copy of S_k at hand; S_(k−1)ᵀ … S_1ᵀ follow level by level.
+  Eigen::SparseMatrix<double> normal_equations(const Eigen::VectorXd& D, int width,
+                                               const std::function<void(int, double*)>& row,
+                                               Eigen::MatrixXd& MtG) const;
+  // Mᵀ D M in full by sparse products, level by level: S_1ᵀ(S_2ᵀ(⋯ S_kᵀ D S_k ⋯)S_2)S_1. The
+  // reference construction (tests compare gram_lower against it); slower and far larger in
+  // memory on big cages.
   Eigen::SparseMatrix<double> gram(const Eigen::VectorXd& D) const;
   // The product M, explicitly (for tests and small cages).
   RowSparse compose() const;
@@ -80,6 +100,7 @@ class Subdivision {
 
  private:
   int cage_vertices_ = 0;
+  std::vector<int> cage_face_start_;  // the cage's face offsets: face f's level-k quads are contiguous
   std::vector<RowSparse> steps_;
   PolyMesh refined_;
   std::vector<Eigen::MatrixXd> scratch_;  // per intermediate level: cols by #rows, i.e. #rows by cols row-major
