@@ -84,7 +84,8 @@ export interface Skin3dRigHandle extends EmbindObject {
   refinedCageCornerSharpness(): Float64Array;
   handles(): Float64Array;
   useShepard(power: number): void;
-  bbw(level: number, maxIterations: number, multiplierTolerance: number): number;
+  /** onHandle(solved, total) after each handle's solve. */
+  bbw(level: number, maxIterations: number, multiplierTolerance: number, onHandle: ((solved: number, total: number) => void) | undefined): number;
   bbwLevel(maxVertices: number): number;
   refinedWeights(): Float64Array;
   cageWeights(): Float64Array;

@@ -132,12 +132,16 @@ function setupHandle(cage: Cage, handleCount: number, levels: number): Skin3dRig
 }
 
 /** Fills the handle's weights per `spec`. */
-function fillWeights(h: Skin3dRigHandle, handles: ArrayLike<number>, spec: WeightSpec): void {
+/**
+ * Fills the rig's weights from `spec`. `onHandle(solved, total)`: BBW's progress, called after each
+ * handle's solve.
+ */
+function fillWeights(h: Skin3dRigHandle, handles: ArrayLike<number>, spec: WeightSpec, onHandle?: (solved: number, total: number) => void): void {
   const H = handles.length / 3;
   if (spec === 'shepard' || spec === 'bbw') {
     h.handles().set(Array.from(handles));
     if (spec === 'shepard') h.useShepard(2);
-    else checkStatus(h.bbw(h.bbwLevel(BBW_MAX_VERTICES), 100, 3), 'skin3d', () => h.errorMessage());
+    else checkStatus(h.bbw(h.bbwLevel(BBW_MAX_VERTICES), 100, 3, onHandle), 'skin3d', () => h.errorMessage());
     return;
   }
   const given = 'perRefinedVertex' in spec ? spec.perRefinedVertex : spec.perCageVertex;
@@ -208,7 +212,8 @@ export class SubdivisionRig {
 
   /**
    * Weights per refined vertex (#refined × #handles, row-major), for computing slow weights in a
-   * worker and passing them back to create() as `{ perRefinedVertex }`. `onProgress` gets 0 and 1.
+   * worker and passing them back to create() as `{ perRefinedVertex }`. `onProgress` gets 0, with
+   * BBW 0.95 × the share of handles solved after each handle's solve, and 1 when done.
    */
   static solveWeights(cage: Cage, handles: ArrayLike<number>, levels: number, kind: 'shepard' | 'bbw', onProgress?: (fraction: number) => void): Float64Array {
     const H = checkHandles(handles);
@@ -216,7 +221,9 @@ export class SubdivisionRig {
     onProgress?.(0);
     const h = setupHandle(cage, H, levels);
     try {
-      fillWeights(h, handles, kind);
+      // BBW: after each handle's solve, the share of handles solved (carrying the weights to the
+      // rig's level is the last twentieth).
+      fillWeights(h, handles, kind, (solved, total) => onProgress?.((0.95 * solved) / total));
       const out = h.refinedWeights().slice();
       onProgress?.(1);
       return out;

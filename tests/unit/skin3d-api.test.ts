@@ -123,6 +123,20 @@ test('weights given per refined vertex or per cage vertex, and solveWeights, giv
   }
 });
 
+test('solveWeights with bbw reports progress after each handle and gives the rig\'s own bbw weights', () => {
+  const c = parseCage(readShared('meshes/quad/torus_quad.obj'));
+  const handles = [1.35, 0, 0, -1.35, 0, 0, 0, 0.65, 0];
+  const progress: number[] = [];
+  const solved = SubdivisionRig.solveWeights(c, handles, 2, 'bbw', (f) => progress.push(f));
+  expect(progress).toEqual([0, ...[1, 2, 3].map((k) => (0.95 * k) / 3), 1]);
+  const rig = SubdivisionRig.create(c, { handles, levels: 2, weights: 'bbw' });
+  try {
+    expect(maxDiff(rig.weights, solved)).toBe(0);
+  } finally {
+    rig.dispose();
+  }
+});
+
 test('bbw weights: bounded, a partition of unity', () => {
   const c = parseCage(readShared('meshes/quad/torus_quad.obj'));
   const rig = SubdivisionRig.create(c, { handles: [1.35, 0, 0, -1.35, 0, 0, 0, 0.65, 0], levels: 2, weights: 'bbw' });

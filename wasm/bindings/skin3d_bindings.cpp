@@ -5,7 +5,7 @@
 // positionsIn(), faceSizesIn(), faceIndicesIn(), creaseEdgesIn() (2 per crease, 0-based) and
 // creaseSharpnessIn(), and with corner tags resizeCorners(n), cornerVerticesIn(),
 // cornerSharpnessIn(); setup(levels, handleCount). Weights: write handles() then useShepard(power)
-// or bbw(level, ...), or write refinedWeights() (and restrictWeights()) or cageWeights() (and
+// or bbw(level, ..., onHandle), or write refinedWeights() (and restrictWeights()) or cageWeights() (and
 // prolongateWeights()); then precompute(). Per frame: write transforms() (12 per handle), call
 // update(), read cage(). The per-frame calls allocate nothing, so views stay valid between them.
 #include <emscripten/bind.h>
@@ -112,10 +112,13 @@ class Skin3dRigHandle {
 
   val handles() { return view_of(handles_); }
   void useShepard(double power) { rig_.use_shepard(handles_.data(), power); }
-  int bbw(int level, int max_iterations, double multiplier_tolerance) {
+  // on_handle: a JS function (solved, total) called after each handle's solve, or undefined.
+  int bbw(int level, int max_iterations, double multiplier_tolerance, val on_handle) {
     skin::BbwOptions options;
     options.max_iterations = max_iterations;
     options.multiplier_tolerance = multiplier_tolerance;
+    if (!on_handle.isUndefined() && !on_handle.isNull())
+      options.on_handle_solved = [&on_handle](int solved, int total) { on_handle(solved, total); };
     const skin::WeightsReport r = surface_bbw_weights(rig_, handles_.data(), level, options);
     if (!r.ok()) return fail(r.error);
     return kOk;

@@ -4,6 +4,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "../skin/test_meshes.h"
 #include "skin/operators.h"
@@ -70,6 +72,27 @@ TEST(SurfaceBbw, BoundedPartitionOfUnityPeakingAtTheHandles) {
   }
   // The naive baseline's cage weights are those of each cage vertex's descendant.
   for (int k = 0; k < torus.nv() * H; ++k) EXPECT_EQ(rig.cage_weights()[k], W[k]);
+}
+
+TEST(SurfaceBbw, ReportsEachHandleSolvedWithoutChangingTheWeights) {
+  const Cage torus = read_cage("torus_quad.obj");
+  const int H = 3;
+  const double handles[9] = {1.35, 0, 0, -1.35, 0, 0, 0, 0.65, 0};
+  std::vector<double> plain, reported;
+  std::vector<std::pair<int, int>> calls;
+  for (int pass = 0; pass < 2; ++pass) {
+    SubdivisionRig rig;
+    ASSERT_EQ(
+        rig.setup(torus.V.data(), torus.nv(), torus.sizes.data(), torus.nf(), torus.indices.data(), nullptr, 0, 2, H),
+        "");
+    skin::BbwOptions options;
+    if (pass == 1) options.on_handle_solved = [&](int solved, int total) { calls.emplace_back(solved, total); };
+    ASSERT_TRUE(surface_bbw_weights(rig, handles, 1, options).ok());
+    (pass == 0 ? plain : reported) = rig.refined_weights();
+  }
+  const std::vector<std::pair<int, int>> expected = {{1, H}, {2, H}, {3, H}};
+  EXPECT_EQ(calls, expected);
+  EXPECT_EQ(plain, reported);
 }
 
 TEST(SurfaceBbw, RejectsHandlesOnOneVertexAndBadLevels) {

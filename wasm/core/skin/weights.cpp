@@ -231,6 +231,7 @@ WeightsReport bbw_weights_from_operators(const SpMat& L, const SpMat& M, const i
       report.converged &= qp.converged;
       report.pinned += qp.pinned;
       X.col(j) = x;
+      if (options.on_handle_solved) options.on_handle_solved(j + 1, handle_count);
     }
   }
   for (int j = 0; j < handle_count; ++j) write_column(s, handle_count, j, X.col(j), W);

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,9 @@ struct BbwOptions {
                                        // (500 to 20k triangles)
   bool partition_of_unity = true;      // normalize so Σ_i w_i = 1 at every vertex (off: the raw QP optimum)
   MassType mass = MassType::kVoronoi;  // see operators.h
+  // Called after each handle's active-set solve with (handles solved, #H), for progress reports;
+  // the weights do not depend on it. Unset: not called.
+  std::function<void(int, int)> on_handle_solved;
 };
 
 // Bounded Biharmonic Weights: per handle i, minimize ½ w_iᵀ Q w_i with Q = L M⁻¹ L subject to
