@@ -189,9 +189,16 @@ bool Straightener::pass(PathStats* stats) {
   apply(chosen_, trial_, trial_unfolded_, splice);
   double trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
   if (!(trial_length < length_ - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
-    // Together they did not shorten the path: fall back to the largest turn alone.
+    // Together they did not shorten the path: fall back to the largest turn alone. The others'
+    // zippers and chords are not tried again (a semi-star at a reflex vertex shortens the path,
+    // a zipper or chord need not; one that does not kept the group failing pass after pass).
     const Flip* best = *std::max_element(chosen_.begin(), chosen_.end(),
                                          [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
+    for (const Flip* f : chosen_) {
+      if (f == best) continue;
+      if (f->chord) no_chord_.insert(f->vertex);
+      if (f->chain) no_chain_.insert(f->vertex);
+    }
     chosen_.assign(1, best);
     apply(chosen_, trial_, trial_unfolded_, splice);
     trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
