@@ -10,8 +10,11 @@
 // semi-stars of a line of boundary vertices that would still block the path, at once) and the
 // chord (`chord`: the faces along the straight line between the neighbouring apices, which crosses
 // many rows of vertices at once). A pass (`pass`) flips every reflex vertex whose faces do not touch
-// another's and keeps the flips (`apply`) if the path gets shorter. The straightening ends when no
-// reflex vertex is left unfrozen, or after options.max_passes passes.
+// another's and keeps the flips (`apply`) if the path gets shorter. A vertex is frozen up to the
+// turn the path made there (looked at again when the path turns more there, as after its
+// neighbours' flips), so that the path ends locally shortest: at every bend its angle on the far
+// side is at least π. The straightening ends when no reflex vertex is left unfrozen, or after
+// options.max_passes passes.
 //
 // A Straightener belongs to one mesh; its scratch (strips, layouts, funnel paths, flips) is kept
 // between paths, so after warm-up a path allocates nothing but what its result needs.
@@ -121,8 +124,9 @@ class Straightener {
   void begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip);
   // One pass of phase (iii): every reflex vertex not frozen, largest turn first, gets a flip (a
   // chord, a zipper or a semi-star) unless its faces touch an earlier one's; the flips are kept
-  // together if they shorten the path, else the largest turn's alone if it does. False when no
-  // reflex vertex was left (the path is locally shortest).
+  // together if they shorten the path, else the largest turn's alone if it does (the others'
+  // zippers and chords are then given up: a semi-star at a reflex vertex shortens the path, they
+  // need not). False when no reflex vertex was left (the path is locally shortest).
   bool pass(PathStats* stats = nullptr);
   // The semi-star flip of apex j, where the path turns by `turn` around vertex v = apices()[j].vertex
   // whose run in the strip is strip[first..last]: flip.other is v's other semi-star, from
