@@ -192,6 +192,24 @@ export async function surfaceScaleBenchmarks(root, data, options = {}) {
   return { curves, baseline, meshes: rows, seconds: (performance.now() - t_start) / 1000, load_average: [load_before, os.loadavg()[0]] };
 }
 
+/**
+ * The straightening change of 2026-12-02 (branch h/curves), measured once natively with a count of
+ * instructions (valgrind cachegrind; `surface_scale_bench curves <mesh> <n> 3`, the same polygons
+ * before and after, the mesh loading subtracted), which other load on the machine does not change.
+ */
+const STRAIGHTENING_NOTE = `Straightening (wasm/core/surface/straighten.*, funnel.*; 2026-12-02): the funnel keeps its two chains
+and looks at each portal once (the simple stupid form looked again at the portals after each apex:
+74% of its steps on the coil), and a pass's funnel takes up the known path in every stretch between its
+flips. Vertices frozen as locally shortest were frozen for good; now only up to the turn they were frozen
+at, and looked at again when the path turns more there. Before, the paths ended with bends whose far
+side spanned less than π (not locally shortest; tests/native/surface/straighten_scale_test.cpp): on
+the folded body, curves of 10 random polygons came out up to 36% longer than they do now. When a pass's
+flips together do not shorten the path, the others' zippers and chords are given up besides falling
+back to the largest turn alone (one that did not shorten kept its group failing, pass after pass).
+Native instructions for random curves (mesh loading subtracted), before → after: coil, 5 curves,
+3.32 G → 3.07 G (0.92×); folded body, 5 curves, 0.63 G → 1.68 G (2.7×; 2.6× the flips, the paths
+are straightened where they were not); nefertiti, 10 curves, 0.117 G → 0.204 G (1.75×).`;
+
 const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
 const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
 
@@ -260,6 +278,8 @@ shortest paths): paths searched and seeded (straightened through known paths), g
 searches expanded, faces of the strips straightened, straightening passes, flips kept:
 
 ${work.join('\n')}
+
+${STRAIGHTENING_NOTE}
 
 Shortest paths between random vertex pairs (${m[0]?.geodesics.sources} sources × ${m[0]?.geodesics.targets} targets per mesh), ours
 (SurfaceMesh.shortestPath: refined search graph, funnel, flips; wasm, timed inside the module) against

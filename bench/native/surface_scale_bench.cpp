@@ -12,10 +12,16 @@
 //   surface_scale_bench search <mesh> <pairs> <seed>
 //       phase (i) alone, with and without landmarks, on random face pairs: nodes expanded and time
 //       per search for the kDual and kRefined graphs, and the landmark precompute.
+//   surface_scale_bench curves <mesh> <polygons> <seed> [lengths]
+//       random whole-surface curves (4 control points uniform over the area), OLR 5 levels, as the
+//       wasm benchmark traces them: per-curve ms (median, p90, p99, max; this thread's CPU time, so
+//       that other work on the machine does not inflate it) and work counters (median,
+//       p99); with `lengths`, every curve's polyline length too (to compare two builds' curves).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <iostream>
 #include <map>
 #include <random>
@@ -24,6 +30,7 @@
 
 #include "../../tests/native/reference/exact_geodesic.h"
 #include "../../tests/native/surface/test_meshes.h"
+#include "surface/curves.h"
 #include "surface/geodesic.h"
 
 using namespace splinekit::surface;
@@ -32,6 +39,13 @@ using Clock = std::chrono::steady_clock;
 
 static double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// CPU time of this thread (ms): per-curve times that other work on the machine does not inflate.
+static double thread_ms() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return 1e3 * t.tv_sec + 1e-6 * t.tv_nsec;
 }
 
 static int write_obj(const Arrays& a, const std::string& path) {
@@ -128,12 +142,77 @@ static int search(const std::string& file, int pairs, unsigned seed) {
   return 0;
 }
 
+static int curves(const std::string& file, int polygons, unsigned seed, bool lengths) {
+  const TriMesh mesh = testing::build(testing::read_mesh(file));
+  const int nf = static_cast<int>(mesh.triangles.size());
+  GeodesicSolver solver(mesh);
+  CurveTracer tracer(solver);
+  std::vector<double> area(nf);
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = mesh.triangles[f];
+    area[f] = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+  }
+  std::mt19937 rng(seed);
+  std::discrete_distribution<int> face(area.begin(), area.end());
+  std::uniform_real_distribution<double> u(0, 1);
+  auto point = [&]() {
+    double a = u(rng), b = u(rng);
+    if (a + b > 1) a = 1 - a, b = 1 - b;
+    return MeshPoint{face(rng), splinekit::Vec2(a, b)};
+  };
+  TraceOptions options;
+  options.scheme = Scheme::kOLR;
+  options.levels = 5;
+  std::vector<MeshPoint> polyline;
+  std::vector<double> ms, curve_length;
+  std::vector<std::array<double, 6>> counters;
+  for (int i = 0; i < polygons; ++i) {
+    const ControlPolygon polygon = {point(), point(), point(), point()};
+    tracer.stats = TraceStats{};
+    const double t0 = thread_ms();
+    tracer.trace(polygon, options, polyline);
+    ms.push_back(thread_ms() - t0);
+    const TraceStats& s = tracer.stats;
+    counters.push_back({double(s.shortest_paths), double(s.seeded_paths), double(s.paths.visited_nodes),
+                        double(s.paths.strip_faces), double(s.paths.passes), double(s.paths.accepted_flips)});
+    double len = 0;
+    for (size_t k = 0; k + 1 < polyline.size(); ++k)
+      len += (eval_position(mesh, polyline[k + 1]) - eval_position(mesh, polyline[k])).norm();
+    curve_length.push_back(len);
+  }
+  auto quantile = [](std::vector<double> x, double q) {
+    std::sort(x.begin(), x.end());
+    return x.empty() ? 0.0 : x[std::min(x.size() - 1, static_cast<size_t>(q * x.size()))];
+  };
+  double total = 0;
+  for (double x : ms) total += x;
+  std::printf(
+      "{\"triangles\":%d,\"curves\":%d,\"total_ms\":%.1f,\"median_ms\":%.3f,\"p90_ms\":%.3f,\"p99_ms\":%.3f,\"max_ms\":"
+      "%.3f",
+      nf, polygons, total, quantile(ms, 0.5), quantile(ms, 0.9), quantile(ms, 0.99), quantile(ms, 1));
+  const char* names[] = {"searched", "seeded", "nodes", "strip_faces", "passes", "flips"};
+  for (int k = 0; k < 6; ++k) {
+    std::vector<double> c;
+    for (const auto& x : counters) c.push_back(x[k]);
+    std::printf(",\"%s\":[%.0f,%.0f]", names[k], quantile(c, 0.5), quantile(c, 0.99));
+  }
+  if (lengths) {
+    std::printf(",\"lengths\":[");
+    for (size_t i = 0; i < curve_length.size(); ++i) std::printf("%s%.15g", i ? "," : "", curve_length[i]);
+    std::printf("]");
+  }
+  std::printf("}\n");
+  return 0;
+}
+
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   try {
     if (mode == "shape" && argc >= 4) return shape(argc, argv);
     if (mode == "exact" && argc >= 3) return exact(argv[2]);
     if (mode == "search" && argc >= 5) return search(argv[2], std::atoi(argv[3]), std::atoi(argv[4]));
+    if (mode == "curves" && argc >= 5)
+      return curves(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 && std::string(argv[5]) == "lengths");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "surface_scale_bench: %s\n", e.what());
     return 1;
@@ -141,6 +220,7 @@ int main(int argc, char** argv) {
   std::fprintf(stderr,
                "usage: surface_scale_bench shape coil|folded|noisy <out.obj> [<in mesh>]\n"
                "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
-               "       surface_scale_bench search <mesh> <pairs> <seed>\n");
+               "       surface_scale_bench search <mesh> <pairs> <seed>\n"
+               "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths]\n");
   return 2;
 }

@@ -4,6 +4,22 @@
 
 namespace splinekit::surface {
 
+namespace {
+
+// A point of the funnel's two chains: where it lies, its mesh vertex and the last portal it bounds.
+struct ChainPoint {
+  Vec2 pos;
+  int vertex, portal;
+};
+
+}  // namespace
+
+// The funnel is kept as its two chains, in one array: the left chain from its newest point
+// chain[lo] to the apex chain[ap], the right chain from the apex to its newest point chain[hi].
+// Each chain turns one way (the left one left, the right one right); a new portal end point pops
+// the points it sees past, and when it sees past the apex too it crosses the other chain, whose
+// points it passes become apices. Every portal is thus looked at once (the "simple stupid" form,
+// which keeps one point per side, looks again at the portals after each new apex).
 void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std::vector<Apex>& apices,
             const Splice* splice) {
   const int n = static_cast<int>(u.portals.size());
@@ -15,9 +31,17 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
     while (m + 2 < known.size() && known[m + 1].emitted < splice->lo) ++m;
     apices.insert(apices.end(), known.begin() + 1, known.begin() + m + 1);
   }
-  Vec2 apex = apices.back().pos, left = apex, right = apex;
-  int apex_index = apices.back().portal, left_index = apex_index, right_index = apex_index;
-  int left_vertex = apices.back().vertex, right_vertex = left_vertex;
+  static thread_local std::vector<ChainPoint> chain;
+  const size_t size = 2 * static_cast<size_t>(n) + 4;
+  if (chain.size() < size) chain.resize(size);
+  int lo = 0, ap = 0, hi = 0;
+  // The funnel's state once apices.back() is the apex: the chains hold it alone.
+  auto restart = [&]() {
+    const Apex& x = apices.back();
+    lo = ap = hi = n + 2;
+    chain[ap] = {x.pos, x.vertex, x.portal};
+  };
+  restart();
   // The known path's apex that the one just made is, past `hi`, or 0.
   auto known_from = [&]() -> size_t {
     const Apex& x = apices.back();
@@ -34,47 +58,75 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
                         known[k].emitted - splice->shift});
     apices.back().pos = target;
   };
-  for (int i = apex_index + 1; i <= n; ++i) {
-    const Vec2 L = i < n ? u.left(i) : target;
-    const Vec2 R = i < n ? u.right(i) : target;
-    const int lv = i < n ? u.portals[i].left_vertex : -1;
-    const int rv = i < n ? u.portals[i].right_vertex : -1;
-    // Right side: tighten when R is left of (or on) apex->right.
-    if (orient(apex, right, R) >= 0) {
-      if (apex == right || apex == left || orient(apex, left, R) < 0) {
-        right = R;
-        right_index = i;
-        right_vertex = rv;
-      } else {
-        // R crosses over the left side: the left point becomes the apex.
-        apices.push_back({left, left_vertex, left_index, i});
-        if (const size_t y = known_from()) return finish_known(y);
-        apex = left;
-        apex_index = left_index;
-        right = left = apex;
-        right_index = left_index = apex_index;
-        right_vertex = left_vertex;
-        i = apex_index;
-        continue;
+  // A stretch between changes: once the apex just made is a known one there, the known apices made
+  // by the stretch's portals follow it (moved); false when none does.
+  size_t stretch = 0;
+  auto take_known = [&]() {
+    const Apex& x = apices.back();
+    if (!splice || x.vertex < 0) return false;
+    const std::vector<Splice::Agreement>& between = splice->between;
+    while (stretch < between.size() && between[stretch].to <= x.portal) ++stretch;
+    if (stretch == between.size() || x.portal < between[stretch].from) return false;
+    const Splice::Agreement& g = between[stretch];
+    const std::vector<Apex>& known = *splice->path;
+    const int at = x.portal + g.shift;
+    const auto y = std::lower_bound(known.begin(), known.end(), at, [](const Apex& a, int p) { return a.portal < p; });
+    if (y == known.end() || y->portal != at || y->vertex != x.vertex) return false;
+    const size_t before = apices.size();
+    for (auto k = y + 1; k != known.end() && k->vertex >= 0 && k->emitted < g.to + g.shift; ++k)
+      apices.push_back({g.motion(k->pos), k->vertex, k->portal - g.shift, k->emitted - g.shift});
+    return apices.size() > before;
+  };
+  // A point of the chains becomes an apex at portal i: kGo on, kJumped (the known path took over up
+  // to apices.back(): restart there), kDone (it took over to the end).
+  enum class Made { kGo, kJumped, kDone };
+  auto make = [&](const ChainPoint& c, int i) {
+    apices.push_back({c.pos, c.vertex, c.portal, i});
+    if (const size_t y = known_from()) {
+      finish_known(y);
+      return Made::kDone;
+    }
+    return take_known() ? Made::kJumped : Made::kGo;
+  };
+  // Portal i's end points, right then left (as the funnel tightens its right side first).
+  auto add_right = [&](const Vec2& R, int rv, int i) {
+    if (R == chain[ap].pos) return Made::kGo;  // (the apex itself)
+    while (hi > ap && orient(chain[hi - 1].pos, chain[hi].pos, R) >= 0) --hi;
+    while (hi == ap && ap > lo && orient(chain[ap].pos, chain[ap - 1].pos, R) >= 0) {
+      // R crosses over the left chain: its first point becomes the apex.
+      hi = --ap;
+      if (const Made m = make(chain[ap], i); m != Made::kGo) return m;
+    }
+    chain[++hi] = {R, rv, i};
+    return Made::kGo;
+  };
+  auto add_left = [&](const Vec2& L, int lv, int i) {
+    if (L == chain[ap].pos) return Made::kGo;
+    while (lo < ap && orient(chain[lo + 1].pos, chain[lo].pos, L) <= 0) ++lo;
+    while (lo == ap && ap < hi && orient(chain[ap].pos, chain[ap + 1].pos, L) <= 0) {
+      lo = ++ap;
+      if (const Made m = make(chain[ap], i); m != Made::kGo) return m;
+    }
+    chain[--lo] = {L, lv, i};
+    return Made::kGo;
+  };
+  for (int i = apices.back().portal + 1; i <= n; ++i) {
+    Made m;
+    if (i < n) {
+      m = add_right(u.right(i), u.portals[i].right_vertex, i);
+      if (m == Made::kGo) m = add_left(u.left(i), u.portals[i].left_vertex, i);
+    } else {  // the target: the path to it is the apex's right chain once it joins it
+      if (target == chain[ap].pos) break;
+      m = add_right(target, -1, n);
+      if (m == Made::kGo) {
+        for (int k = ap + 1; k < hi && m == Made::kGo; ++k) m = make(chain[k], n);
+        if (m == Made::kGo) break;
       }
     }
-    // Left side: tighten when L is right of (or on) apex->left.
-    if (orient(apex, left, L) <= 0) {
-      if (apex == left || apex == right || orient(apex, right, L) > 0) {
-        left = L;
-        left_index = i;
-        left_vertex = lv;
-      } else {
-        apices.push_back({right, right_vertex, right_index, i});
-        if (const size_t y = known_from()) return finish_known(y);
-        apex = right;
-        apex_index = right_index;
-        left = right = apex;
-        left_index = right_index = apex_index;
-        left_vertex = right_vertex;
-        i = apex_index;
-        continue;
-      }
+    if (m == Made::kDone) return;
+    if (m == Made::kJumped) {
+      restart();
+      i = apices.back().portal;
     }
   }
   if (apices.back().pos == target && apices.size() > 1) apices.pop_back();

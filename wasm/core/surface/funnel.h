@@ -22,18 +22,27 @@ struct Apex {
 
 // How a strip differs from one whose funnel path is known (`path`): its portals before `lo` are
 // that strip's, and its portals from `hi` on are that strip's portals `shift` further on, moved by
-// `motion`.
+// `motion`. Where it differs in several places (a pass's flips), `between` lists the stretches
+// between them, in strip order: portals [from, to) are the known strip's `shift` further on, moved
+// by `motion`.
 struct Splice {
+  struct Agreement {
+    int from = 0, to = 0, shift = 0;
+    PlaneMotion motion;
+  };
   const std::vector<Apex>* path = nullptr;
   int lo = 0, hi = 0, shift = 0;
   PlaneMotion motion;
+  std::vector<Agreement> between;
 };
 
 // The shortest path from `source` (on u's first face) to `target` (on its last) inside the
 // unfolded strip u, as its apices: source, the bends (mesh vertices), target.
 // With a splice, the funnel takes up the known path at its last apex made before `lo` (from there
 // on it is in the same state), and once an apex beyond `hi` is one of the known path's, it ends
-// with that path's (the same portals follow, moved).
+// with that path's (the same portals follow, moved). Likewise in each stretch `between`: once an
+// apex there is one of the known path's, the known apices the stretch's portals make follow, and
+// the funnel goes on from the last of them. So its work follows the changes, not the strip.
 void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std::vector<Apex>& apices,
             const Splice* splice = nullptr);
 

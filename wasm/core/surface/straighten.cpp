@@ -77,15 +77,54 @@ bool Straightener::on_left(const Apex& x) const {
 }
 
 bool Straightener::overlaps(int first, int last) const {
-  return std::any_of(flips_.begin(), flips_.begin() + used_,
-                     [&](const Flip& f) { return first <= f.last + 1 && f.first <= last + 1; });
+  const int n = static_cast<int>(strip_.size());
+  for (int i = std::max(0, first - 1), end = std::min(n - 1, last + 1); i <= end; ++i)
+    if (taken_[i]) return true;
+  return false;
 }
 
-bool Straightener::is_frozen(int v) const { return std::find(frozen_.begin(), frozen_.end(), v) != frozen_.end(); }
+bool Straightener::is_frozen(int v, double turn) const {
+  const double* up_to = frozen_.find(v);
+  return up_to && turn <= *up_to + 1e-9;
+}
 
-void Straightener::freeze(int v, PathStats* stats) {
-  frozen_.push_back(v);
+void Straightener::freeze(int v, double turn, PathStats* stats) {
+  // Where v's angle sum is known, the path is locally shortest there for every turn up to θ − 2π.
+  if (!std::isnan(angle_sums_[v]) && straight_through(v, turn)) turn = std::max(turn, angle_sums_[v] - 2 * kPi);
+  frozen_.insert(v, turn);
   if (stats) ++stats->frozen_vertices;
+}
+
+void VertexSet::insert(int v, double value) {
+  if (2 * (keys_.size() + 1) > slots_.size()) {  // grow: twice the slots, the keys again
+    std::vector<int> old_slots(std::max<size_t>(64, 2 * slots_.size()), -1);
+    std::vector<double> old_values(old_slots.size());
+    old_slots.swap(slots_), old_values.swap(values_);
+    for (size_t k = 0; k < old_slots.size(); ++k) {
+      if (old_slots[k] < 0) continue;
+      size_t i = slot(old_slots[k]);
+      while (slots_[i] >= 0) i = (i + 1) & (slots_.size() - 1);
+      slots_[i] = old_slots[k], values_[i] = old_values[k];
+    }
+  }
+  size_t i = slot(v);
+  for (; slots_[i] >= 0; i = (i + 1) & (slots_.size() - 1))
+    if (slots_[i] == v) {
+      values_[i] = value;
+      return;
+    }
+  slots_[i] = v, values_[i] = value;
+  keys_.push_back(v);
+}
+
+void VertexSet::clear() {
+  // Each key's slot, freed: its probe ends on it (it is still in), whatever it passes on the way.
+  for (int k : keys_) {
+    size_t i = slot(k);
+    while (slots_[i] != k) i = (i + 1) & (slots_.size() - 1);
+    slots_[i] = -1;
+  }
+  keys_.clear();
 }
 
 // =================================================================================================
@@ -97,13 +136,14 @@ bool Straightener::pass(PathStats* stats) {
   // Every removable reflex vertex, largest turn first, with runs that do not touch each other.
   order_.clear();
   for (size_t j = 1; j + 1 < apices_.size(); ++j) {
-    if (apices_[j].vertex < 0 || is_frozen(apices_[j].vertex)) continue;
+    if (apices_[j].vertex < 0) continue;
     const double turn = turn_at(apices_, j);
-    if (turn > 1e-9) order_.emplace_back(-turn, j);
+    if (turn > 1e-9 && !is_frozen(apices_[j].vertex, turn)) order_.emplace_back(-turn, j);
   }
   if (order_.empty()) return false;
   std::sort(order_.begin(), order_.end());
   used_ = 0;
+  if (taken_.size() < static_cast<size_t>(n)) taken_.resize(n, 0);
   for (const auto& [neg_turn, j] : order_) {
     // A vertex whose faces a flip of this pass already changes cannot flip in it; it is only
     // frozen (as `flip` would) if the path through it is locally shortest.
@@ -112,13 +152,15 @@ bool Straightener::pass(PathStats* stats) {
     const bool in_strip = run_of(v, apices_[j].portal, run_first, run_last);
     const bool blocked = in_strip && used_ > 0 && overlaps(run_first, run_last);
     if (blocked && !std::isnan(angle_sums_[v])) {
-      if (straight_through(v, -neg_turn)) freeze(v, stats);
+      if (straight_through(v, -neg_turn)) freeze(v, -neg_turn, stats);
       continue;
     }
     if (used_ == flips_.size()) flips_.emplace_back();
     Flip& made = flips_[used_];
     if (!in_strip || !flip(j, -neg_turn, run_first, run_last, made)) {
-      freeze(apices_[j].vertex, stats);
+      // Locally shortest at this turn, or (not in the strip, a boundary vertex) not to be flipped.
+      const bool straight = in_strip && !std::isnan(angle_sums_[v]) && straight_through(v, -neg_turn);
+      freeze(v, straight ? -neg_turn : std::numeric_limits<double>::infinity(), stats);
       continue;
     }
     if (blocked) continue;
@@ -131,21 +173,32 @@ bool Straightener::pass(PathStats* stats) {
         (apices_[j + 1].vertex < 0 ||
          run_of(apices_[j + 1].vertex, apices_[j + 1].portal, room.q_first, room.q_last)) &&
         !overlaps(room.p_first, room.q_last);
-    if (!fits || std::find(no_chord_.begin(), no_chord_.end(), made.vertex) != no_chord_.end() || !chord(j, room, made))
-      zipper(j, made);
-    if (!overlaps(made.first, made.last)) ++used_;
+    if (!fits || no_chord_.contains(made.vertex) || !chord(j, room, made)) zipper(j, made);
+    if (!overlaps(made.first, made.last)) {
+      std::fill(taken_.begin() + made.first, taken_.begin() + made.last + 1, 1);
+      ++used_;
+    }
   }
+  for (size_t i = 0; i < used_; ++i)
+    std::fill(taken_.begin() + flips_[i].first, taken_.begin() + flips_[i].last + 1, 0);
   if (used_ == 0) return true;  // all frozen this pass; the next pass finds nothing new
   chosen_.clear();
   for (size_t i = 0; i < used_; ++i) chosen_.push_back(&flips_[i]);
   std::sort(chosen_.begin(), chosen_.end(), [](const Flip* x, const Flip* y) { return x->first < y->first; });
-  Splice splice;
+  Splice& splice = splice_;
   apply(chosen_, trial_, trial_unfolded_, splice);
   double trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
   if (!(trial_length < length_ - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
-    // Together they did not shorten the path: fall back to the largest turn alone.
+    // Together they did not shorten the path: fall back to the largest turn alone. The others'
+    // zippers and chords are not tried again (a semi-star at a reflex vertex shortens the path,
+    // a zipper or chord need not; one that does not kept the group failing pass after pass).
     const Flip* best = *std::max_element(chosen_.begin(), chosen_.end(),
                                          [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
+    for (const Flip* f : chosen_) {
+      if (f == best) continue;
+      if (f->chord) no_chord_.insert(f->vertex);
+      if (f->chain) no_chain_.insert(f->vertex);
+    }
     chosen_.assign(1, best);
     apply(chosen_, trial_, trial_unfolded_, splice);
     trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
@@ -160,11 +213,11 @@ bool Straightener::pass(PathStats* stats) {
   } else {
     for (const Flip* f : chosen_) {
       if (f->chord) {
-        no_chord_.push_back(f->vertex);
+        no_chord_.insert(f->vertex);
       } else if (f->chain) {
-        no_chain_.push_back(f->vertex);
+        no_chain_.insert(f->vertex);
       } else {
-        freeze(f->vertex, stats);
+        freeze(f->vertex, f->turn, stats);
       }
     }
   }
@@ -213,7 +266,7 @@ bool Straightener::flip(size_t j, double turn, int first, int last, Flip& flip) 
 // (no_chain_).
 void Straightener::zipper(size_t j, Flip& flip) {
   const int v = apices_[j].vertex, n = static_cast<int>(strip_.size());
-  if (n < 3 || std::find(no_chain_.begin(), no_chain_.end(), v) != no_chain_.end()) return;
+  if (n < 3 || no_chain_.contains(v)) return;
   const Portal& own = unfolded_.portals[std::clamp(apices_[j].portal, 0, n - 2)];
   const bool left = own.left_vertex == v;
   if (!left && own.right_vertex != v) return;
@@ -449,6 +502,7 @@ void Straightener::apply(const std::vector<const Flip*>& chosen, std::vector<int
                          Splice& splice) {
   u.faces.clear(), u.corners.clear(), u.portals.clear();
   splice.path = &made_;
+  splice.between.clear();
   splice.lo = chosen.front()->first;
   append_moved(u, unfolded_, 0, chosen.front()->first + 1, PlaneMotion{});
   PlaneMotion moved;
@@ -466,6 +520,8 @@ void Straightener::apply(const std::vector<const Flip*>& chosen, std::vector<int
     splice.hi = static_cast<int>(u.faces.size()) - 1;
     splice.shift = f.last - splice.hi;
     splice.motion = moved;
+    if (i + 1 < chosen.size())  // the portals up to the next change's first face agree
+      splice.between.push_back({splice.hi, chosen[i + 1]->first - splice.shift, splice.shift, moved});
     const size_t next = i + 1 < chosen.size() ? chosen[i + 1]->first + 1 : strip_.size(), joint = u.faces.size();
     append_moved(u, unfolded_, f.last + 1, next, moved);
     join(mesh_, u, joint);

@@ -10,8 +10,11 @@
 // semi-stars of a line of boundary vertices that would still block the path, at once) and the
 // chord (`chord`: the faces along the straight line between the neighbouring apices, which crosses
 // many rows of vertices at once). A pass (`pass`) flips every reflex vertex whose faces do not touch
-// another's and keeps the flips (`apply`) if the path gets shorter. The straightening ends when no
-// reflex vertex is left unfrozen, or after options.max_passes passes.
+// another's and keeps the flips (`apply`) if the path gets shorter. A vertex is frozen up to the
+// turn the path made there (looked at again when the path turns more there, as after its
+// neighbours' flips), so that the path ends locally shortest: at every bend its angle on the far
+// side is at least π. The straightening ends when no reflex vertex is left unfrozen, or after
+// options.max_passes passes.
 //
 // A Straightener belongs to one mesh; its scratch (strips, layouts, funnel paths, flips) is kept
 // between paths, so after warm-up a path allocates nothing but what its result needs.
@@ -59,6 +62,31 @@ struct ChordRoom {
   int p_first = 0, q_first = 0, q_last = 0;
 };
 
+// Mesh vertices with a number each (open addressing): a path's frozen vertices and the like, found
+// in O(1) however many there are; clearing costs what was put in, and after warm-up nothing is
+// allocated.
+class VertexSet {
+ public:
+  // v's number, or null when v is not in.
+  const double* find(int v) const {
+    if (slots_.empty()) return nullptr;
+    for (size_t i = slot(v);; i = (i + 1) & (slots_.size() - 1)) {
+      if (slots_[i] == v) return &values_[i];
+      if (slots_[i] < 0) return nullptr;
+    }
+  }
+  bool contains(int v) const { return find(v) != nullptr; }
+  // Puts v in with `value` (or gives it that value).
+  void insert(int v, double value = 0);
+  void clear();
+  size_t size() const { return keys_.size(); }
+
+ private:
+  size_t slot(int v) const { return (static_cast<size_t>(v) * 0x9E3779B1u) & (slots_.size() - 1); }
+  std::vector<int> slots_, keys_;  // slots_: a power of two of them, -1 when free
+  std::vector<double> values_;     // per slot
+};
+
 class Straightener {
  public:
   // ---- Constructors ----
@@ -96,8 +124,9 @@ class Straightener {
   void begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip);
   // One pass of phase (iii): every reflex vertex not frozen, largest turn first, gets a flip (a
   // chord, a zipper or a semi-star) unless its faces touch an earlier one's; the flips are kept
-  // together if they shorten the path, else the largest turn's alone if it does. False when no
-  // reflex vertex was left (the path is locally shortest).
+  // together if they shorten the path, else the largest turn's alone if it does (the others'
+  // zippers and chords are then given up: a semi-star at a reflex vertex shortens the path, they
+  // need not). False when no reflex vertex was left (the path is locally shortest).
   bool pass(PathStats* stats = nullptr);
   // The semi-star flip of apex j, where the path turns by `turn` around vertex v = apices()[j].vertex
   // whose run in the strip is strip[first..last]: flip.other is v's other semi-star, from
@@ -133,8 +162,11 @@ class Straightener {
   bool on_left(const Apex& x) const;
   // Whether strip[first..last] touches the faces of this pass's flips so far.
   bool overlaps(int first, int last) const;
-  bool is_frozen(int v) const;
-  void freeze(int v, PathStats* stats);
+  // Whether v is frozen for a path turning by `turn` there: it was frozen at a turn at least as
+  // large (a vertex where the path is locally shortest stays so while the turn does not grow).
+  bool is_frozen(int v, double turn) const;
+  // Freezes v up to `turn` (infinity: for good, a vertex that cannot be flipped).
+  void freeze(int v, double turn, PathStats* stats);
 
   const TriMesh& mesh_;
   std::vector<int>& face_marks_;
@@ -153,13 +185,15 @@ class Straightener {
   std::vector<int> trial_;
   UnfoldedStrip trial_unfolded_;
   std::vector<Apex> trial_apices_, trial_made_;
+  Splice splice_;  // how the trial strip differs from the strip
 
-  // Vertices frozen, and those whose zipper / chord did not shorten the path (they get the
-  // semi-star from then on).
-  std::vector<int> frozen_, no_chain_, no_chord_;
+  // Vertices frozen (with the largest turn they are frozen for), and those whose zipper / chord
+  // did not shorten the path (they get the semi-star from then on).
+  VertexSet frozen_, no_chain_, no_chord_;
   // This pass's flips (the first used_ of flips_), its vertices by turn, and the flips tried.
   std::vector<Flip> flips_;
   size_t used_ = 0;
+  std::vector<uint8_t> taken_;  // per strip index: 1 where this pass's flips so far change the strip
   std::vector<std::pair<double, size_t>> order_;
   std::vector<const Flip*> chosen_;
   // A zipper's vertices and faces; a chord's walk: the faces it entered, where it laid them, and

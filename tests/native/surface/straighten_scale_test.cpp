@@ -1,0 +1,238 @@
+// The straightening at scale (issue 17) on the shapes where it works hardest, a coil and a body with
+// folded limbs (tests/native/surface/test_meshes.h, at the validity tests' size), whose initial strips
+// from the greedy dual search zigzag (a third of their faces hold a bend of the funnel's path):
+//   - after every pass, the funnel path the pass took up from the known one where the strip did not
+//     change (funnel.h, Splice::between) is the one a fresh funnel finds on the whole strip;
+//   - the chains' funnel (funnel.cpp) finds the same shortest path in a strip as the "simple stupid"
+//     funnel that looks at every portal again after each apex (written out below as the reference);
+//   - the straightened paths are locally shortest: at every bend the path turns around a vertex whose
+//     angle on the far side is at least π (a saddle, or a boundary vertex), and never shorter than the
+//     exact polyhedral distance (MMP, tests/native/reference).
+#include "../reference/exact_geodesic.h"
+#include "surface/geodesic.h"
+#include "surface/straighten.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace splinekit::surface {
+namespace {
+
+// The simple stupid funnel: one point per side, and back to the portal after the apex whenever one
+// is made. Slower (it looks at portals again) but plainly the funnel algorithm.
+void reference_funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std::vector<Apex>& apices) {
+  const int n = static_cast<int>(u.portals.size());
+  apices.assign(1, {source, -1, -1, -1});
+  Vec2 apex = source, left = apex, right = apex;
+  int apex_index = -1, left_index = -1, right_index = -1, left_vertex = -1, right_vertex = -1;
+  for (int i = 0; i <= n; ++i) {
+    const Vec2 L = i < n ? u.left(i) : target, R = i < n ? u.right(i) : target;
+    const int lv = i < n ? u.portals[i].left_vertex : -1, rv = i < n ? u.portals[i].right_vertex : -1;
+    if (orient(apex, right, R) >= 0) {
+      if (apex == right || apex == left || orient(apex, left, R) < 0) {
+        right = R, right_index = i, right_vertex = rv;
+      } else {
+        apices.push_back({left, left_vertex, left_index, i});
+        apex = right = left, apex_index = right_index = left_index, right_vertex = left_vertex;
+        i = apex_index;
+        continue;
+      }
+    }
+    if (orient(apex, left, L) <= 0) {
+      if (apex == left || apex == right || orient(apex, right, L) > 0) {
+        left = L, left_index = i, left_vertex = lv;
+      } else {
+        apices.push_back({right, right_vertex, right_index, i});
+        apex = left = right, apex_index = left_index = right_index, left_vertex = right_vertex;
+        i = apex_index;
+        continue;
+      }
+    }
+  }
+  if (apices.back().pos == target && apices.size() > 1) apices.pop_back();
+  apices.push_back({target, -1, n, n});
+}
+
+struct Shape {
+  std::string name;
+  TriMesh mesh;
+};
+
+std::vector<Shape> shapes() {
+  std::vector<Shape> out;
+  out.push_back({"coil", testing::build(testing::coil(800, 16))});
+  out.push_back({"folded body", testing::build(testing::folded_body(600, 24))});
+  return out;
+}
+
+MeshPoint random_point(const TriMesh& mesh, std::mt19937& rng) {
+  std::uniform_int_distribution<int> face(0, static_cast<int>(mesh.triangles.size()) - 1);
+  std::uniform_real_distribution<double> u(0, 1);
+  double a = u(rng), b = u(rng);
+  if (a + b > 1) a = 1 - a, b = 1 - b;
+  return {face(rng), Vec2(a, b)};
+}
+
+// Sum of the corner angles around v, and whether its fan is closed.
+double angle_sum(const TriMesh& mesh, int v, bool& closed) {
+  std::vector<int> fan;
+  vertex_fan(mesh, v, fan, closed);
+  double sum = 0;
+  for (int f : fan) sum += corner_angle(mesh, f, v);
+  return sum;
+}
+
+TEST(StraightenAtScale, SplicedFunnelsAreFreshFunnelsAfterEveryPass) {
+  for (const Shape& shape : shapes()) {
+    const TriMesh& mesh = shape.mesh;
+    GeodesicSolver solver(mesh);
+    std::vector<int> marks(mesh.triangles.size(), -1);
+    Straightener s(mesh, marks);
+    std::mt19937 rng(17);
+    int passes = 0, checked_bends = 0;
+    for (int k = 0; k < 6; ++k) {
+      const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
+      std::vector<int> strip;
+      ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
+      MeshPoint start, end;
+      ASSERT_TRUE(point_in_face(mesh, a, strip.front(), start));
+      ASSERT_TRUE(point_in_face(mesh, b, strip.back(), end));
+      s.begin(start, end, strip);
+      for (int pass = 0; pass < 5000; ++pass) {
+        const double before = s.length();
+        if (!s.pass()) break;
+        ++passes;
+        EXPECT_LE(s.length(), before) << shape.name << " path " << k << " pass " << pass;
+        std::vector<Apex> raw, fresh;
+        const double length = s.shorten(s.unfolded(), raw, fresh, nullptr);
+        ASSERT_NEAR(length, s.length(), 1e-9 * s.length()) << shape.name << " path " << k << " pass " << pass;
+        ASSERT_EQ(fresh.size(), s.apices().size()) << shape.name << " path " << k << " pass " << pass;
+        for (size_t j = 0; j < fresh.size(); ++j) {
+          ASSERT_EQ(fresh[j].vertex, s.apices()[j].vertex) << shape.name << " path " << k << " pass " << pass;
+          ASSERT_EQ(fresh[j].portal, s.apices()[j].portal) << shape.name << " path " << k << " pass " << pass;
+        }
+        checked_bends += static_cast<int>(fresh.size()) - 2;
+      }
+    }
+    EXPECT_GT(passes, 50) << shape.name;  // (the zigzag strips take many passes)
+    EXPECT_GT(checked_bends, 300) << shape.name;
+  }
+}
+
+TEST(StraightenAtScale, ChainsFunnelIsTheSimpleStupidFunnel) {
+  for (const Shape& shape : shapes()) {
+    const TriMesh& mesh = shape.mesh;
+    GeodesicSolver solver(mesh);
+    std::mt19937 rng(5);
+    size_t bends = 0;
+    for (int k = 0; k < 20; ++k) {
+      const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
+      std::vector<int> strip;
+      ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
+      UnfoldedStrip u;
+      unfold_strip(mesh, strip, u);
+      MeshPoint start, end;
+      ASSERT_TRUE(point_in_face(mesh, a, strip.front(), start));
+      ASSERT_TRUE(point_in_face(mesh, b, strip.back(), end));
+      const Vec2 source = u.map(0, start), target = u.map(static_cast<int>(strip.size()) - 1, end);
+      std::vector<Apex> chains, reference;
+      funnel(u, source, target, chains);
+      reference_funnel(u, source, target, reference);
+      EXPECT_NEAR(polyline_length(chains), polyline_length(reference), 1e-12 * polyline_length(reference))
+          << shape.name << " strip " << k;
+      // The same bends, once the vertices where either goes straight on are dropped.
+      drop_straight(chains);
+      drop_straight(reference);
+      ASSERT_EQ(chains.size(), reference.size()) << shape.name << " strip " << k;
+      for (size_t j = 0; j < chains.size(); ++j) {
+        EXPECT_EQ(chains[j].vertex, reference[j].vertex) << shape.name << " strip " << k << " apex " << j;
+        EXPECT_EQ(chains[j].portal, reference[j].portal) << shape.name << " strip " << k << " apex " << j;
+      }
+      bends += chains.size() - 2;
+    }
+    EXPECT_GT(bends, 300u) << shape.name;  // (zigzag strips: the chains are long)
+  }
+}
+
+TEST(StraightenAtScale, PathsAreLocallyShortestAndNeverShorterThanExact) {
+  for (const Shape& shape : shapes()) {
+    const TriMesh& mesh = shape.mesh;
+    GeodesicSolver solver(mesh);
+    std::vector<int> marks(mesh.triangles.size(), -1);
+    Straightener s(mesh, marks);
+    std::mt19937 rng(29);
+    int bends = 0;
+    for (SearchGraph graph : {SearchGraph::kDual, SearchGraph::kRefined}) {
+      for (int k = 0; k < 8; ++k) {
+        const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
+        std::vector<int> strip;
+        ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, graph));
+        GeodesicPath path;
+        s.straighten(a, b, strip, path);
+        const std::vector<Apex>& apices = s.apices();
+        for (size_t j = 1; j + 1 < apices.size(); ++j) {
+          bool closed;
+          const double theta = angle_sum(mesh, apices[j].vertex, closed);
+          if (!closed) continue;
+          // The strip's side spans π + turn; the other side must not offer a shortcut.
+          EXPECT_GE(theta - kPi - turn_at(apices, j), kPi - 1e-6) << shape.name << " path " << k << " bend " << j;
+          ++bends;
+        }
+        EXPECT_NEAR(path_length(mesh, path), s.length(), 1e-9 * s.length()) << shape.name << " path " << k;
+      }
+    }
+    // Between vertices, against the exact distance: a path is never shorter.
+    std::vector<double> positions;
+    std::vector<int> triangles;
+    for (const Vec3& p : mesh.positions) positions.insert(positions.end(), {p.x(), p.y(), p.z()});
+    for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), {t[0], t[1], t[2]});
+    reference::ExactGeodesic exact(positions.data(), static_cast<int>(mesh.positions.size()), triangles.data(),
+                                   static_cast<int>(mesh.triangles.size()));
+    std::uniform_int_distribution<int> vertex(0, static_cast<int>(mesh.positions.size()) - 1);
+    const int source = vertex(rng);
+    const std::vector<double> d = exact.distances(source);
+    for (int k = 0; k < 10; ++k) {
+      const int target = vertex(rng);
+      if (target == source) continue;
+      GeodesicPath path;
+      ASSERT_TRUE(solver.shortest_path(vertex_point(mesh, source), vertex_point(mesh, target), path));
+      const double length = path_length(mesh, path);
+      EXPECT_GE(length, d[target] * (1 - 1e-9)) << shape.name << " vertices " << source << ", " << target;
+      EXPECT_LE(length, d[target] * 1.05) << shape.name << " vertices " << source << ", " << target;
+    }
+    EXPECT_GT(bends, 0) << shape.name;
+  }
+}
+
+TEST(StraightenAtScale, VertexSetIsASet) {
+  VertexSet set;
+  std::set<int> reference;
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> v(0, 5000);
+  for (int round = 0; round < 3; ++round) {
+    for (int i = 0; i < 700 * (round + 1); ++i) {
+      const int x = v(rng);
+      set.insert(x, -1.0);
+      set.insert(x, 0.5 * x + round);  // (a second insert gives it its value)
+      reference.insert(x);
+    }
+    EXPECT_EQ(set.size(), reference.size());
+    for (int x = 0; x <= 5000; ++x) {
+      ASSERT_EQ(set.contains(x), reference.count(x) > 0) << x;
+      if (set.contains(x)) ASSERT_EQ(*set.find(x), 0.5 * x + round) << x;
+    }
+    set.clear();
+    reference.clear();
+    for (int x = 0; x <= 5000; ++x) ASSERT_FALSE(set.contains(x)) << x;
+  }
+}
+
+}  // namespace
+}  // namespace splinekit::surface
