@@ -17,14 +17,7 @@ namespace splinekit::surface {
 namespace {
 
 using testing::Arrays;
-
-MeshPoint random_point(const TriMesh& mesh, std::mt19937& rng) {
-  std::uniform_int_distribution<int> face(0, static_cast<int>(mesh.triangles.size()) - 1);
-  std::uniform_real_distribution<double> u(0, 1);
-  double a = u(rng), b = u(rng);
-  if (a + b > 1) a = 1 - a, b = 1 - b;
-  return {face(rng), Vec2(a, b)};
-}
+using testing::random_point;
 
 // The point of `mesh` at position p (a vertex within 1e-9), as a vertex point.
 MeshPoint vertex_at(const TriMesh& mesh, const Vec3& p) {

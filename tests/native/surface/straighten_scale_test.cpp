@@ -25,6 +25,8 @@
 namespace splinekit::surface {
 namespace {
 
+using testing::random_point;
+
 // The simple stupid funnel: one point per side, and back to the portal after the apex whenever one
 // is made. Slower (it looks at portals again) but plainly the funnel algorithm.
 void reference_funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std::vector<Apex>& apices) {
@@ -70,14 +72,6 @@ std::vector<Shape> shapes() {
   out.push_back({"coil", testing::build(testing::coil(800, 16))});
   out.push_back({"folded body", testing::build(testing::folded_body(600, 24))});
   return out;
-}
-
-MeshPoint random_point(const TriMesh& mesh, std::mt19937& rng) {
-  std::uniform_int_distribution<int> face(0, static_cast<int>(mesh.triangles.size()) - 1);
-  std::uniform_real_distribution<double> u(0, 1);
-  double a = u(rng), b = u(rng);
-  if (a + b > 1) a = 1 - a, b = 1 - b;
-  return {face(rng), Vec2(a, b)};
 }
 
 // Sum of the corner angles around v, and whether its fan is closed.

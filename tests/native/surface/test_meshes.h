@@ -222,6 +222,15 @@ inline Arrays noisy(Arrays a, double amount, unsigned seed) {
 
 // The mesh point at 3D position x: the face nearest to x with clamped barycentrics. Faces whose
 // normal disagrees with `normal` (when given) are skipped, to pick a side on a cube's edges.
+// A point uniform in the barycentric triangle of a face chosen uniformly (not uniform in area).
+inline MeshPoint random_point(const TriMesh& mesh, std::mt19937& rng) {
+  std::uniform_int_distribution<int> face(0, static_cast<int>(mesh.triangles.size()) - 1);
+  std::uniform_real_distribution<double> u(0, 1);
+  double a = u(rng), b = u(rng);
+  if (a + b > 1) a = 1 - a, b = 1 - b;
+  return {face(rng), Vec2(a, b)};
+}
+
 inline MeshPoint point_at(const TriMesh& mesh, const Vec3& x, const Vec3& normal = Vec3::Zero()) {
   double best = std::numeric_limits<double>::infinity();
   MeshPoint out;
