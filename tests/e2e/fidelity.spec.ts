@@ -11,7 +11,7 @@ import { basename, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.js';
-import { frames, openEditor, publicFile, sharedData, waitForFile } from './helpers.js';
+import { editorState, frames, openEditor, publicFile, sharedData, waitForFile } from './helpers.js';
 import { compareShots as compare, hideOverlays, shoot, type Comparison } from './shots.js';
 import { drag, handleAt, rigFile, rigReady } from './skin-helpers.js';
 
@@ -85,8 +85,10 @@ test('every SVG draws in the editor as Chromium draws the file', async ({ page, 
   const failures: string[] = [];
   for (const path of FILES) {
     const name = basename(path);
+    // The first sample is also the editor's starting drawing: wait for the copy opened here.
+    const shownBefore = (await editorState(page)).documentsShown;
     await page.getByTestId('file-input').setInputFiles(path);
-    const state = await waitForFile(page, name);
+    const state = await waitForFile(page, name, shownBefore);
     expect(state.error, name).toBeNull();
     const frame = await page.evaluate(() => window.splinekitEditor!.frame());
     const { width, height } = shownSize(frame!);

@@ -36,6 +36,7 @@ export type EditorState = {
   selection: { spline: number; anchor: number; kind: string | null } | null;
   canUndo: boolean;
   canRedo: boolean;
+  documentsShown: number;
 };
 
 /** Console errors and uncaught page errors, collected from the moment the page is created. */
@@ -64,9 +65,16 @@ export async function frames(page: Page): Promise<void> {
   await page.evaluate(() => new Promise<void>((r) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(r, 0)))));
 }
 
-/** Waits for the editor to show `file` (or an error), then for it to be drawn. */
-export async function waitForFile(page: Page, file: string): Promise<EditorState> {
-  await page.waitForFunction((f) => window.splinekitEditor!.state().file === f, file);
+/**
+ * Waits for the editor to show `file` (or an error), then for it to be drawn. `shownBefore`: the
+ * state's documentsShown before the file was chosen, so that reopening the file already shown
+ * waits for the new copy instead of returning at once.
+ */
+export async function waitForFile(page: Page, file: string, shownBefore = -1): Promise<EditorState> {
+  await page.waitForFunction(([f, n]) => {
+    const s = window.splinekitEditor!.state();
+    return s.file === f && s.documentsShown > n;
+  }, [file, shownBefore] as const);
   await frames(page);
   return editorState(page);
 }

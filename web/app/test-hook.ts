@@ -23,6 +23,8 @@ export interface EditorTestHook {
     selection: { spline: number; anchor: number; kind: ContinuityKind | null } | null;
     canUndo: boolean;
     canRedo: boolean;
+    /** How many times a document has been shown (opened, undone to, reverted): tells a reopened file from the one before. */
+    documentsShown: number;
   };
   /** Where an anchor is on screen (client pixels), to click it like a user would. */
   anchorOnScreen(spline: number, anchor: number): { x: number; y: number } | null;
@@ -93,6 +95,8 @@ declare global {
 }
 
 export function installTestHook(editor: Editor, ready: Promise<void>): void {
+  let documentsShown = 0;
+  editor.state.events.on('document', () => documentsShown++);
   const hook: EditorTestHook = {
     ready,
     state() {
@@ -118,6 +122,7 @@ export function installTestHook(editor: Editor, ready: Promise<void>): void {
         selection: sel ? { ...sel, kind } : null,
         canUndo: history.canUndo,
         canRedo: history.canRedo,
+        documentsShown,
       };
     },
     anchorOnScreen(spline, anchor) {
