@@ -1,6 +1,6 @@
 import type { Matrix, SvgDocument } from '../../src/index.js';
 import type { Spline } from '../../src/spline/spline.js';
-import { invert, isIdentity, multiply } from '../../src/svg/matrix.js';
+import { IDENTITY, invert, isIdentity, multiply, translation } from '../../src/svg/matrix.js';
 import type { Viewport } from './viewport.js';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
@@ -49,7 +49,7 @@ const NOT_DRAWN = new Set([
 function ownTransform(el: Element): Matrix {
   const list = (el as SVGGraphicsElement).transform?.baseVal;
   const m = list && list.numberOfItems > 0 ? list.consolidate()?.matrix : null;
-  return m ? { a: m.a, b: m.b, c: m.c, d: m.d, e: m.e, f: m.f } : { a: 1, b: 0, c: 0, d: 1, e: 0, f: 0 };
+  return m ? { a: m.a, b: m.b, c: m.c, d: m.d, e: m.e, f: m.f } : { ...IDENTITY };
 }
 
 /** A CSS color the canvas paints as the browser does ('none' and references → null). */
@@ -178,7 +178,7 @@ function strokeFirst(order: string): boolean {
 function docTransformOf(el: Element, root: Element): Matrix {
   const chain: Element[] = [];
   for (let e: Element | null = el; e && e !== root; e = e.parentElement) chain.unshift(e);
-  return chain.reduce<Matrix>((m, e) => multiply(m, ownTransform(e)), { a: 1, b: 0, c: 0, d: 1, e: 0, f: 0 });
+  return chain.reduce<Matrix>((m, e) => multiply(m, ownTransform(e)), IDENTITY);
 }
 
 /** A clipPath's content as one path in its own coordinates, or why the painter cannot use it. */
@@ -195,7 +195,7 @@ function clipShape(clip: Element): { path: Path2D; rule: CanvasFillRule; toDoc: 
     if (!ref) return 'a clip path using a missing element';
     if (getComputedStyle(ref).clipRule !== ruleOf) return 'a clip path whose shape sets its own clip rule';
     const u = shape as SVGUseElement;
-    m = multiply(m, { a: 1, b: 0, c: 0, d: 1, e: u.x.baseVal.value, f: u.y.baseVal.value });
+    m = multiply(m, translation(u.x.baseVal.value, u.y.baseVal.value));
     shape = ref;
     m = multiply(m, ownTransform(shape));
   }
@@ -256,7 +256,7 @@ export function paintLive(ctx: CanvasRenderingContext2D, plan: { ops: ShapeOp[] 
     }
     const shape = doc.shapes[op.shape];
     // A shape with a coordinate that is not finite is left out, as the browser's drawing leaves it.
-    if (!finite(splines, shape.firstSpline, shape.splineCount)) continue;
+    if (!allFinite(splines, shape.firstSpline, shape.splineCount)) continue;
     const path = new Path2D();
     addSplines(path, splines, shape.firstSpline, shape.splineCount, op.toUser);
     const m = multiply(view, op.toDoc);
@@ -290,7 +290,8 @@ function strokeOp(ctx: CanvasRenderingContext2D, op: ShapeOp, path: Path2D): voi
   ctx.stroke(path);
 }
 
-function finite(splines: readonly Spline[], first: number, count: number): boolean {
+/** Whether every control point of splines[first … first + count) is finite. */
+export function allFinite(splines: readonly Spline[], first: number, count: number): boolean {
   for (let k = first; k < first + count; k++) {
     const p = splines[k].points;
     for (let j = 0; j < p.length; j++) if (!Number.isFinite(p[j])) return false;

@@ -3,7 +3,7 @@ import { SHAPE_ATTRIBUTE, fixedFormatter, formatNumber, type Matrix, type SvgDoc
 import type { Spline } from '../../src/spline/spline.js';
 import { invert, isIdentity } from '../../src/svg/matrix.js';
 import type { Viewport } from './viewport.js';
-import { paintLive, planLivePainting, type LivePlan } from './live-canvas.js';
+import { allFinite, paintLive, planLivePainting, type LivePlan } from './live-canvas.js';
 import { sanitizeSvg } from './sanitize.js';
 
 /** A shape the drawing leaves out (its path is left empty), or the whole drawing when it cannot be shown. */
@@ -430,10 +430,3 @@ function largestMove(all: readonly Spline[], first: number, count: number, drawn
   return Number.isNaN(most) ? Infinity : most;
 }
 
-function allFinite(all: readonly Spline[], first: number, count: number): boolean {
-  for (let k = first; k < first + count; k++) {
-    const p = all[k].points;
-    for (let j = 0; j < p.length; j++) if (!Number.isFinite(p[j])) return false;
-  }
-  return true;
-}
