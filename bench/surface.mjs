@@ -454,11 +454,16 @@ was set; the header says what each option does).
   average 0.3% longer on nefertiti, 0.2% shorter on spot_loop2_369k; 4 makes nefertiti's 1% longer).
   (Measured with the label-correcting SLF/LLL search of before 2026-12-02; the search is now a heap
   A*, see "Surface at scale".)
-- **landmarks = 8, landmark_weight = 3, refined_landmark_scale = 0, landmark_min_faces = 16384**
+- **landmarks = 8, landmark_weight = 2, refined_landmark_scale = 0, landmark_min_faces = 16384**
   (phase (i)'s landmark term, 2026-12-02, section "Surface at scale"). 8 landmarks take 16 bytes per
   triangle, what giving search records per edge rather than per node saved (18). Random whole-surface
   curves on the 384k-triangle coil (native, 10, loaded machine) took 356 ms at landmark_weight 1, 142
-  at 2, 97 at 3 and 340 at 5. The refined search (shortest paths) does not use them by default:
+  at 2, 97 at 3 and 340 at 5. Counted in instructions instead (valgrind, native, random whole-surface
+  curves, mesh loading subtracted; 2026-12-02 after the straightening fix), 2 against 3: noisy
+  spot_loop2_369k 0.82x (40 curves), spot_loop2_369k 0.93x (40), nefertiti 0.92x (40), the coil
+  0.995x (15), the folded body 1.00x (8); the curves came out shorter in total by 0.5% (noisy spot),
+  2.3% (spot_loop2_369k) and 0.8% (nefertiti): a greedier search hands the straightening strips
+  that settle more often on a longer local geodesic. 1 and 1.5 cost more (the search grows). The refined search (shortest paths) does not use them by default:
   dual-graph distances overestimate the refined graph's by up to a third on the coil, and a scale that
   makes the search cheap there is not admissible elsewhere (0.85: the coil's refined searches expand
   23k nodes instead of 1.2M, but 90% of nefertiti's paths within 0.5% of exact instead of 100%; 0.5

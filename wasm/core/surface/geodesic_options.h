@@ -40,7 +40,7 @@ struct ShortestPathOptions {
   // staircases), giving longer paths.
   int landmarks = 8;                  // landmarks per mesh (2 bytes per face each); 0: none
   int landmark_min_faces = 16384;     // smaller meshes search fast enough on the Euclidean term
-  double landmark_weight = 3;         // kDual (as dual_heuristic_weight: a greedy search)
+  double landmark_weight = 2;         // kDual (as dual_heuristic_weight: a greedy search)
   double refined_landmark_scale = 0;  // kRefined
 };
 
