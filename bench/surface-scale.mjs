@@ -291,6 +291,13 @@ than exact by more than 1e-9 relative (must be 0).
 ${geo.join('\n')}
 
 ${geoNote(m)}
+
+Where ours misses on the folded body (2026-12-02, the 20 pairs above, native): the exact distances are right. A search
+graph with 12 nodes on every edge instead of 4 finds all 20 within 0.5% (worst 1.0010; the worst pair above, 1.0564,
+comes out exact), so the misses are the graph's: on the body's faces, 14 times longer around than along, a path
+crossing them at a shallow angle can only cross their long edges at node positions, and the graph's distance along
+the right corridor runs over the wrong one's (on the worst pair 1.030 by the graph at 4 nodes, 0.939 at 12, against
+0.921 exact). One node per face width on long edges (up to 16) did not help: the hops stay a staircase.
 ${m.filter((r) => r.geodesics.exact_error).map((r) => `\n${r.name}: ${r.geodesics.exact_error}; no accuracy there.`).join('')}
 `;
 }
