@@ -1,7 +1,9 @@
 import {
+  AlwaysDepth,
   BufferAttribute,
   BufferGeometry,
   Color,
+  DepthTexture,
   DirectionalLight,
   DoubleSide,
   Group,
@@ -10,13 +12,17 @@ import {
   MeshStandardMaterial,
   PerspectiveCamera,
   Scene,
+  ShaderMaterial,
+  SRGBColorSpace,
   Sphere,
   Vector2,
   Vector3,
   WebGLRenderer,
+  WebGLRenderTarget,
   MOUSE,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { FullScreenQuad } from 'three/examples/jsm/postprocessing/Pass.js';
 import { Emitter } from '../app/events.js';
 import { TriangleBVH, type BVHArrays, type RayHit } from './bvh.js';
 import { softwareWebGL } from './gl-info.js';
@@ -68,6 +74,67 @@ const BACKGROUND = 0x1b1d21;
 const MESH_COLOR = 0xc4bcaf;
 /** Pixels the pointer may travel and still make a click. */
 const CLICK_SLOP = 4;
+/**
+ * Triangles a software rasteriser draws in a frame of ~50 ms (SwiftShader: ~0.2 µs a triangle on
+ * these machines). A mesh of more is drawn in pieces, one a frame (see render()); a GPU draws any
+ * mesh in one.
+ */
+const SOFTWARE_TRIANGLES_PER_FRAME = 250_000;
+/** The camera must have been still this long (ms) before the full mesh is drawn piece by piece. */
+const SETTLE_MS = 120;
+
+/** A coarse stand-in for a large mesh (web/view3d/proxy.ts) with its smooth normals. */
+export interface MeshProxyArrays {
+  positions: Float32Array;
+  triangles: Uint32Array;
+  normals: Float32Array;
+}
+
+/**
+ * A mesh too large to draw in a frame: its proxy is drawn while the camera moves; once it is
+ * still, the mesh is drawn into `target` (color and depth) a piece a frame, and when all of it is
+ * there, frames copy the target to the screen and draw the mode's layers over it (depth tested
+ * against the mesh's depth), so a curve edit does not draw the mesh again.
+ */
+interface Detail {
+  proxy: Mesh;
+  target: WebGLRenderTarget;
+  /** Indices of the mesh drawn into the target for the current view. */
+  drawn: number;
+  /** When the view last changed (performance.now()). */
+  changedAt: number;
+  /** The screen must be drawn again (the layers or the view changed). */
+  stale: boolean;
+  /** The screen shows the mesh (else the proxy). */
+  full: boolean;
+  /**
+   * Signalled when the GPU has drawn the last piece sent. The next piece waits for it: a WebGL
+   * draw returns before it is done, and the frame that next draws on screen would wait for every
+   * piece sent before it (a software rasteriser works through them only then).
+   */
+  fence: WebGLSync | null;
+  timer: ReturnType<typeof setTimeout> | 0;
+}
+
+/** Copies a render target's color and depth to the screen (the depth, so layers are hidden by the mesh). */
+function copyMaterial(): ShaderMaterial {
+  return new ShaderMaterial({
+    uniforms: { tColor: { value: null }, tDepth: { value: null } },
+    vertexShader: 'varying vec2 vUv; void main() { vUv = uv; gl_Position = vec4(position.xy, 0.0, 1.0); }',
+    // (only where the mesh is: the background is the screen's own clear color)
+    fragmentShader: `uniform sampler2D tColor; uniform sampler2D tDepth; varying vec2 vUv;
+      void main() {
+        float depth = texture2D(tDepth, vUv).x;
+        if (depth >= 1.0) discard;
+        gl_FragColor = texture2D(tColor, vUv);
+        gl_FragDepth = depth;
+        #include <colorspace_fragment>
+      }`,
+    depthTest: true,
+    depthFunc: AlwaysDepth,
+    depthWrite: true,
+  });
+}
 
 /** A mesh shown by the view: its geometry in file order, so face indices are the file's. */
 export interface ShownMesh {
@@ -105,6 +172,10 @@ export class View3D {
   private bvh: TriangleBVH | null = null;
   /** The picking hierarchy comes later (setPicking). */
   private pickingLater = false;
+  /** Triangles drawn in one frame at most (larger meshes with a proxy are drawn over frames). */
+  private readonly trianglesPerFrame: number;
+  private detail: Detail | null = null;
+  private copy: FullScreenQuad | null = null;
   private readonly frames = new FrameScheduler((time) => {
     this.events.emit('prerender', time);
     this.render();
@@ -116,6 +187,7 @@ export class View3D {
   constructor(readonly container: HTMLElement) {
     // Multisampled on a GPU; not on a software rasteriser, where it would double a big mesh's frame.
     this.renderer = new WebGLRenderer({ antialias: !softwareWebGL(), preserveDrawingBuffer: true, powerPreference: 'high-performance' });
+    this.trianglesPerFrame = softwareWebGL() ? SOFTWARE_TRIANGLES_PER_FRAME : Infinity;
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.renderer.setClearColor(new Color(BACKGROUND), 1);
     const canvas = this.renderer.domElement;
@@ -178,9 +250,15 @@ export class View3D {
 
   /**
    * Shows a mesh (positions xyz, triangles in file order). Smooth normals and the picking
-   * hierarchy are computed unless given (a worker can make them). `fit` frames the mesh.
+   * hierarchy are computed unless given (a worker can make them). `fit` frames the mesh. A
+   * `proxy` is drawn instead while the camera moves if the mesh has more triangles than the
+   * renderer draws in a frame (the still picture is the mesh, drawn over a few frames).
    */
-  setMesh(positions: Float32Array, triangles: Uint32Array, options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays | 'later' } = {}): ShownMesh {
+  setMesh(
+    positions: Float32Array,
+    triangles: Uint32Array,
+    options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays | 'later'; proxy?: MeshProxyArrays | null } = {},
+  ): ShownMesh {
     const fit = options.fit ?? true;
     this.clearMesh();
     const geometry = new BufferGeometry();
@@ -195,6 +273,20 @@ export class View3D {
     this.meshObject = new Mesh(geometry, this.material);
     this.meshObject.name = 'surface-mesh';
     this.scene.add(this.meshObject);
+    const proxy = options.proxy;
+    if (proxy && triangles.length / 3 > this.trianglesPerFrame && proxy.triangles.length < triangles.length) {
+      const g = new BufferGeometry();
+      g.setAttribute('position', new BufferAttribute(proxy.positions, 3));
+      g.setAttribute('normal', new BufferAttribute(proxy.normals, 3));
+      g.setIndex(new BufferAttribute(proxy.triangles, 1));
+      const object = new Mesh(g, this.material);
+      object.name = 'surface-mesh-proxy';
+      object.visible = false;
+      this.scene.add(object);
+      const target = new WebGLRenderTarget(1, 1, { depthTexture: new DepthTexture(1, 1) });
+      target.texture.colorSpace = SRGBColorSpace;
+      this.detail = { proxy: object, target, drawn: 0, changedAt: performance.now(), stale: true, full: false, fence: null, timer: 0 };
+    }
     // 'later': a worker sends it (setPicking); until then nothing is picked and everything is seen.
     this.pickingLater = options.bvh === 'later';
     this.bvh = this.pickingLater ? null : new TriangleBVH(positions, triangles, options.bvh === 'later' ? undefined : options.bvh);
@@ -237,11 +329,22 @@ export class View3D {
     m.geometry.computeVertexNormals();
     m.geometry.computeBoundingSphere();
     this.bvh = null;
+    this.redrawMesh();
     this.requestRender();
   }
 
   clearMesh(): void {
     if (!this.meshObject) return;
+    const d = this.detail;
+    if (d) {
+      clearTimeout(d.timer);
+      if (d.fence) (this.renderer.getContext() as WebGL2RenderingContext).deleteSync(d.fence);
+      this.scene.remove(d.proxy);
+      d.proxy.geometry.dispose();
+      d.target.depthTexture?.dispose();
+      d.target.dispose();
+      this.detail = null;
+    }
     this.scene.remove(this.meshObject);
     this.meshObject.geometry.dispose();
     this.meshObject = null;
@@ -255,6 +358,7 @@ export class View3D {
     if (this.material.flatShading === flat) return;
     this.material.flatShading = flat;
     this.material.needsUpdate = true;
+    this.redrawMesh();
     this.requestRender();
   }
 
@@ -344,7 +448,27 @@ export class View3D {
   }
 
   requestRender(): void {
+    if (this.detail) this.detail.stale = true;
     this.frames.request();
+  }
+
+  /**
+   * How much of the shown mesh the picture on screen has: all its triangles, or (a large mesh
+   * while the camera moves, or until it is drawn in full) its proxy's; 0 without a mesh.
+   */
+  get pictureTriangles(): number {
+    const m = this.meshObject;
+    if (!m) return 0;
+    const d = this.detail;
+    return (d && !d.full ? d.proxy : m).geometry.index!.count / 3;
+  }
+
+  /** What the mesh looks like changed (the camera, the canvas size, the shading): a large one is drawn again. */
+  private redrawMesh(): void {
+    const d = this.detail;
+    if (!d) return;
+    d.drawn = 0;
+    d.changedAt = performance.now();
   }
 
   /** Resolves once the next frame has been drawn. */
@@ -355,13 +479,84 @@ export class View3D {
   render(): void {
     if (!this.visible) return;
     this.updateClipping();
-    this.renderer.render(this.scene, this.camera);
+    if (this.detail && this.meshObject) this.renderInPieces(this.detail, this.meshObject);
+    else this.renderer.render(this.scene, this.camera);
+  }
+
+  /**
+   * A frame of a mesh too large to draw in one (see Detail): the proxy on screen until the mesh
+   * is in the target, then the target and the layers; meanwhile, once the camera has been still
+   * for SETTLE_MS, one piece of the mesh into the target per frame, each once the GPU is done with
+   * the one before.
+   */
+  private renderInPieces(d: Detail, mesh: Mesh): void {
+    const r = this.renderer, all = mesh.geometry.index!.count, gl = r.getContext() as WebGL2RenderingContext;
+    const size = r.getDrawingBufferSize(new Vector2());
+    if (d.target.width !== size.x || d.target.height !== size.y) {
+      d.target.setSize(size.x, size.y);
+      d.drawn = 0;
+    }
+    // (a fence's status changes between tasks: it is asked again next frame)
+    if (d.fence && gl.getSyncParameter(d.fence, gl.SYNC_STATUS) === gl.SIGNALED) {
+      gl.deleteSync(d.fence);
+      d.fence = null;
+      if (d.drawn >= all) d.stale = true; // all of it is drawn: on screen now
+    }
+    if (d.stale) {
+      d.stale = false;
+      d.full = d.drawn >= all && !d.fence;
+      if (d.full) {
+        this.copy ??= new FullScreenQuad(copyMaterial());
+        const material = this.copy.material as ShaderMaterial;
+        material.uniforms.tColor.value = d.target.texture;
+        material.uniforms.tDepth.value = d.target.depthTexture;
+        this.copy.render(r);
+        mesh.visible = false;
+        r.autoClear = false;
+        r.render(this.scene, this.camera);
+        r.autoClear = true;
+        mesh.visible = true;
+      } else {
+        mesh.visible = false;
+        d.proxy.visible = true;
+        r.render(this.scene, this.camera);
+        d.proxy.visible = false;
+        mesh.visible = true;
+      }
+    }
+    if (d.fence) {
+      this.frames.request();
+      return;
+    }
+    if (d.drawn >= all) return;
+    const wait = d.changedAt + SETTLE_MS - performance.now();
+    if (wait > 0) {
+      clearTimeout(d.timer);
+      d.timer = setTimeout(() => this.frames.request(), wait);
+      return;
+    }
+    const count = Math.min(all - d.drawn, 3 * this.trianglesPerFrame);
+    mesh.geometry.setDrawRange(d.drawn, count);
+    this.layer.visible = false;
+    r.setRenderTarget(d.target);
+    if (d.drawn === 0) r.clear();
+    r.autoClear = false;
+    r.render(this.scene, this.camera);
+    r.autoClear = true;
+    r.setRenderTarget(null);
+    this.layer.visible = true;
+    mesh.geometry.setDrawRange(0, Infinity);
+    d.drawn += count;
+    d.fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    gl.flush();
+    this.frames.request();
   }
 
   dispose(): void {
     this.frames.cancel();
     this.controls.dispose();
     this.clearMesh();
+    (this.copy?.material as ShaderMaterial | undefined)?.dispose();
     this.material.dispose();
     this.renderer.dispose();
     this.canvas.remove();
@@ -382,6 +577,7 @@ export class View3D {
   }
 
   private viewChanged(): void {
+    this.redrawMesh();
     this.events.emit('view', null);
     this.requestRender();
   }
