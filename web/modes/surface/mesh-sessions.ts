@@ -107,8 +107,9 @@ export class MeshSessions {
 
   /** Opens a mesh file's bytes: a mesh opened before comes back with its drawing. */
   async openBytes(bytes: Uint8Array, name: string, options: { sample: boolean; undoable: boolean }): Promise<boolean> {
-    const key = `${contentHash(bytes)}:${name}`;
-    const target = this.sessions.get(key) ?? new SurfaceSession(name, bytes, options.sample);
+    const hash = contentHash(bytes);
+    const key = `${hash}:${name}`;
+    const target = this.sessions.get(key) ?? new SurfaceSession(name, bytes, options.sample, hash);
     const previous = this._current;
     if (target === previous) return true;
     const ok = await this.show(target);
