@@ -1,5 +1,6 @@
 import {
   AlwaysDepth,
+  Box3,
   BufferAttribute,
   BufferGeometry,
   Color,
@@ -24,6 +25,7 @@ import {
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { FullScreenQuad } from 'three/examples/jsm/postprocessing/Pass.js';
 import { Emitter } from '../app/events.js';
+import type { MeshBounds } from './bounds.js';
 import { TriangleBVH, type BVHArrays, type RayHit } from './bvh.js';
 import { softwareWebGL } from './gl-info.js';
 import { FrameScheduler } from '../app/frames.js';
@@ -98,8 +100,15 @@ export interface MeshProxyArrays {
  */
 interface Detail {
   proxy: Mesh;
+  /**
+   * The mesh in pieces of up to trianglesPerFrame consecutive triangles: their own index buffers,
+   * the mesh's vertex buffers (so each piece's frame uploads only its indices).
+   */
+  pieces: Mesh[];
+  /** The vertex buffers are on the GPU (uploaded in a frame of their own, before the first piece). */
+  uploaded: boolean;
   target: WebGLRenderTarget;
-  /** Indices of the mesh drawn into the target for the current view. */
+  /** Pieces of the mesh drawn into the target for the current view. */
   drawn: number;
   /** When the view last changed (performance.now()). */
   changedAt: number;
@@ -250,14 +259,14 @@ export class View3D {
 
   /**
    * Shows a mesh (positions xyz, triangles in file order). Smooth normals and the picking
-   * hierarchy are computed unless given (a worker can make them). `fit` frames the mesh. A
+   * hierarchy (and the bounds) are computed unless given (a worker can make them). `fit` frames the mesh. A
    * `proxy` is drawn instead while the camera moves if the mesh has more triangles than the
    * renderer draws in a frame (the still picture is the mesh, drawn over a few frames).
    */
   setMesh(
     positions: Float32Array,
     triangles: Uint32Array,
-    options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays | 'later'; proxy?: MeshProxyArrays | null } = {},
+    options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays | 'later'; proxy?: MeshProxyArrays | null; bounds?: MeshBounds } = {},
   ): ShownMesh {
     const fit = options.fit ?? true;
     this.clearMesh();
@@ -266,8 +275,14 @@ export class View3D {
     geometry.setIndex(new BufferAttribute(triangles, 1));
     if (options.normals && options.normals.length === positions.length) geometry.setAttribute('normal', new BufferAttribute(options.normals, 3));
     else geometry.computeVertexNormals();
-    geometry.computeBoundingSphere();
-    geometry.computeBoundingBox();
+    if (options.bounds) {
+      const [x0, y0, z0, x1, y1, z1] = options.bounds.box;
+      geometry.boundingBox = new Box3(new Vector3(x0, y0, z0), new Vector3(x1, y1, z1));
+      geometry.boundingSphere = new Sphere(geometry.boundingBox.getCenter(new Vector3()), options.bounds.radius);
+    } else {
+      geometry.computeBoundingSphere();
+      geometry.computeBoundingBox();
+    }
     const bb = geometry.boundingBox!;
     const sphere = geometry.boundingSphere ?? new Sphere(new Vector3(), 1);
     this.meshObject = new Mesh(geometry, this.material);
@@ -283,9 +298,22 @@ export class View3D {
       object.name = 'surface-mesh-proxy';
       object.visible = false;
       this.scene.add(object);
+      this.meshObject.visible = false; // (drawn as its pieces)
+      const pieces: Mesh[] = [];
+      for (let start = 0; start < triangles.length; start += 3 * this.trianglesPerFrame) {
+        const piece = new BufferGeometry();
+        piece.setAttribute('position', geometry.getAttribute('position'));
+        piece.setAttribute('normal', geometry.getAttribute('normal'));
+        piece.setIndex(new BufferAttribute(triangles.subarray(start, start + 3 * this.trianglesPerFrame), 1));
+        piece.boundingSphere = sphere.clone(); // (not computed again from all the positions)
+        const m = new Mesh(piece, this.material);
+        m.visible = false;
+        pieces.push(m);
+        this.scene.add(m);
+      }
       const target = new WebGLRenderTarget(1, 1, { depthTexture: new DepthTexture(1, 1) });
       target.texture.colorSpace = SRGBColorSpace;
-      this.detail = { proxy: object, target, drawn: 0, changedAt: performance.now(), stale: true, full: false, fence: null, timer: 0 };
+      this.detail = { proxy: object, pieces, uploaded: false, target, drawn: 0, changedAt: performance.now(), stale: true, full: false, fence: null, timer: 0 };
     }
     // 'later': a worker sends it (setPicking); until then nothing is picked and everything is seen.
     this.pickingLater = options.bvh === 'later';
@@ -339,8 +367,9 @@ export class View3D {
     if (d) {
       clearTimeout(d.timer);
       if (d.fence) (this.renderer.getContext() as WebGL2RenderingContext).deleteSync(d.fence);
-      this.scene.remove(d.proxy);
+      this.scene.remove(d.proxy, ...d.pieces);
       d.proxy.geometry.dispose();
+      for (const piece of d.pieces) piece.geometry.dispose();
       d.target.depthTexture?.dispose();
       d.target.dispose();
       this.detail = null;
@@ -479,7 +508,7 @@ export class View3D {
   render(): void {
     if (!this.visible) return;
     this.updateClipping();
-    if (this.detail && this.meshObject) this.renderInPieces(this.detail, this.meshObject);
+    if (this.detail) this.renderInPieces(this.detail);
     else this.renderer.render(this.scene, this.camera);
   }
 
@@ -489,8 +518,8 @@ export class View3D {
    * for SETTLE_MS, one piece of the mesh into the target per frame, each once the GPU is done with
    * the one before.
    */
-  private renderInPieces(d: Detail, mesh: Mesh): void {
-    const r = this.renderer, all = mesh.geometry.index!.count, gl = r.getContext() as WebGL2RenderingContext;
+  private renderInPieces(d: Detail): void {
+    const r = this.renderer, all = d.pieces.length, gl = r.getContext() as WebGL2RenderingContext;
     const size = r.getDrawingBufferSize(new Vector2());
     if (d.target.width !== size.x || d.target.height !== size.y) {
       d.target.setSize(size.x, size.y);
@@ -511,17 +540,13 @@ export class View3D {
         material.uniforms.tColor.value = d.target.texture;
         material.uniforms.tDepth.value = d.target.depthTexture;
         this.copy.render(r);
-        mesh.visible = false;
         r.autoClear = false;
         r.render(this.scene, this.camera);
         r.autoClear = true;
-        mesh.visible = true;
       } else {
-        mesh.visible = false;
         d.proxy.visible = true;
         r.render(this.scene, this.camera);
         d.proxy.visible = false;
-        mesh.visible = true;
       }
     }
     if (d.fence) {
@@ -535,18 +560,26 @@ export class View3D {
       d.timer = setTimeout(() => this.frames.request(), wait);
       return;
     }
-    const count = Math.min(all - d.drawn, 3 * this.trianglesPerFrame);
-    mesh.geometry.setDrawRange(d.drawn, count);
+    const piece = d.pieces[d.drawn];
     this.layer.visible = false;
+    piece.visible = true;
     r.setRenderTarget(d.target);
-    if (d.drawn === 0) r.clear();
-    r.autoClear = false;
-    r.render(this.scene, this.camera);
-    r.autoClear = true;
+    if (!d.uploaded) {
+      // A frame that draws nothing but uploads the vertex buffers (with the first piece's indices).
+      piece.geometry.setDrawRange(0, 0);
+      r.render(this.scene, this.camera);
+      piece.geometry.setDrawRange(0, Infinity);
+      d.uploaded = true;
+    } else {
+      if (d.drawn === 0) r.clear();
+      r.autoClear = false;
+      r.render(this.scene, this.camera);
+      r.autoClear = true;
+      d.drawn++;
+    }
     r.setRenderTarget(null);
+    piece.visible = false;
     this.layer.visible = true;
-    mesh.geometry.setDrawRange(0, Infinity);
-    d.drawn += count;
     d.fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
     gl.flush();
     this.frames.request();

@@ -156,7 +156,7 @@ export class MeshSessions {
       };
       const loaded = await this.mode.client.load(target.bytes, target.file, (reply) => {
         generation = ++this._generation;
-        this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh ?? 'later', proxy: reply.proxy });
+        this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh ?? 'later', proxy: reply.proxy, bounds: reply.bounds });
         shown = this._mesh = { info: reply.info, scale: reply.scale, loadMs: reply.ms, ready: false };
         if (!this.sessions.has(target.key)) {
           this.sessions.set(target.key, target);

@@ -7,6 +7,7 @@
 import { SurfaceMesh, SurfaceSpline, init, mapSplines, meshPointNormal, parseSVG, vertexNormals, type MeshPoint, type SurfaceSplineJSON } from '../../../src/index.js';
 import { serveRequests } from '../../app/worker-host.js';
 import { TriangleBVH, type BVHArrays } from '../../view3d/bvh.js';
+import { meshBounds } from '../../view3d/bounds.js';
 import { meshProxy } from '../../view3d/proxy.js';
 import type { PolygonPaths, SplineOp, SurfaceReply, SurfaceRequest, TracedPolyline } from './protocol.js';
 
@@ -73,7 +74,7 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   const shownNormals = normals.slice();
   const coarse = T.length / 3 > PROXY_FACES ? meshProxy(positions, triangles, PROXY_TRIANGLES) : null;
   const proxy = coarse ? { ...coarse, normals: vertexNormals(coarse.positions, coarse.triangles) } : null;
-  post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, proxy, bvh, scale: next.scale, ms: performance.now() - t0 }, [
+  post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, proxy, bounds: meshBounds(positions), bvh, scale: next.scale, ms: performance.now() - t0 }, [
     positions.buffer,
     triangles.buffer,
     shownNormals.buffer,
