@@ -77,11 +77,11 @@ const MESH_COLOR = 0xc4bcaf;
 /** Pixels the pointer may travel and still make a click. */
 const CLICK_SLOP = 4;
 /**
- * Triangles a software rasteriser draws in a frame of ~50 ms (SwiftShader: ~0.2 µs a triangle on
- * these machines). A mesh of more is drawn in pieces, one a frame (see render()); a GPU draws any
+ * Triangles a software rasteriser draws in ~30 ms (SwiftShader: ~0.2 µs a triangle on these
+ * machines, when nothing else runs). A mesh of more is drawn in pieces, one a frame (see render()); a GPU draws any
  * mesh in one.
  */
-const SOFTWARE_TRIANGLES_PER_FRAME = 250_000;
+const SOFTWARE_TRIANGLES_PER_FRAME = 150_000;
 /** The camera must have been still this long (ms) before the full mesh is drawn piece by piece. */
 const SETTLE_MS = 120;
 
@@ -184,6 +184,8 @@ export class View3D {
   /** Triangles drawn in one frame at most (larger meshes with a proxy are drawn over frames). */
   private readonly trianglesPerFrame: number;
   private detail: Detail | null = null;
+  /** The orbit controls are being dragged. */
+  private orbiting = false;
   private copy: FullScreenQuad | null = null;
   private readonly frames = new FrameScheduler((time) => {
     this.events.emit('prerender', time);
@@ -233,6 +235,13 @@ export class View3D {
     this.controls.screenSpacePanning = true;
     this.controls.mouseButtons = { LEFT: MOUSE.ROTATE, MIDDLE: MOUSE.ROTATE, RIGHT: MOUSE.PAN };
     this.controls.addEventListener('change', () => this.viewChanged());
+    // A large mesh is not drawn in pieces while the user orbits (only once the camera is let go).
+    this.controls.addEventListener('start', () => (this.orbiting = true));
+    this.controls.addEventListener('end', () => {
+      this.orbiting = false;
+      this.redrawMesh();
+      this.requestRender();
+    });
 
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
@@ -553,7 +562,7 @@ export class View3D {
       this.frames.request();
       return;
     }
-    if (d.drawn >= all) return;
+    if (d.drawn >= all || this.orbiting) return;
     const wait = d.changedAt + SETTLE_MS - performance.now();
     if (wait > 0) {
       clearTimeout(d.timer);
