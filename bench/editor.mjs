@@ -310,7 +310,7 @@ the import is the editor's own measurement (the status bar's "imported in … ms
 segments; parsed in a worker, it includes handing the document to the page and rebuilding it there); "chosen to drawn" runs from handing the file to the file input until the editor shows
 it and two frames have been presented; the "longest stall" is the largest gap between two
 animation frames in that time (how long the page froze; the generated file's are medians of
-${r.big_runs} runs; the mesh's of ${r.mesh_runs} runs, opened after Surface mode showed its sample, goal ≤ 3 s; the mesh is drawn, and can be
+${r.big_runs} runs; the mesh's of ${r.mesh_runs} runs, opened once Surface mode's sample is settled and drawn, goal ≤ 3 s; the mesh is drawn, and can be
 looked at and orbited, once the worker has built it: a mesh of more triangles than the software rasteriser draws in a frame
 (150k) as a coarse stand-in (vertex clustering, ~55k triangles, made by the worker) while the camera moves, and, once it has been let go
 for 120 ms, in full, drawn off screen a piece of 150k triangles per frame (each once the GPU has finished the one before) and then
