@@ -377,3 +377,142 @@ test('Surface mode: place an SVG, save and load it, a bad mesh keeps the old one
 test('Surface mode: the sample meshes are small files', () => {
   for (const f of ['pebble.ply', 'torus-knot.ply', 'vase.obj']) expect(statSync(publicFile(`samples/meshes/${f}`)).size).toBeLessThan(600_000);
 });
+
+/**
+ * A bumpy torus of 2·n² triangles (n² vertices) as binary little-endian PLY, as bench/editor.mjs
+ * makes its 2M-triangle mesh.
+ */
+function bumpyTorusPLY(n: number): Buffer {
+  const nv = n * n, nf = 2 * nv;
+  const header = Buffer.from(`ply\nformat binary_little_endian 1.0\nelement vertex ${nv}\nproperty float x\nproperty float y\nproperty float z\nelement face ${nf}\nproperty list uchar int vertex_indices\nend_header\n`);
+  const body = Buffer.alloc(12 * nv + 13 * nf);
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < n; j++) {
+      const u = (2 * Math.PI * i) / n, v = (2 * Math.PI * j) / n, r = 0.35 * (1 + 0.05 * Math.sin(7 * u) * Math.sin(5 * v));
+      const o = 12 * (i * n + j);
+      body.writeFloatLE((1 + r * Math.cos(v)) * Math.cos(u), o);
+      body.writeFloatLE((1 + r * Math.cos(v)) * Math.sin(u), o + 4);
+      body.writeFloatLE(r * Math.sin(v), o + 8);
+    }
+  }
+  const id = (i: number, j: number) => (i % n) * n + (j % n);
+  let o = 12 * nv;
+  const tri = (a: number, b: number, c: number) => {
+    body[o] = 3;
+    body.writeInt32LE(a, o + 1);
+    body.writeInt32LE(b, o + 5);
+    body.writeInt32LE(c, o + 9);
+    o += 13;
+  };
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < n; j++) {
+      tri(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+      tri(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  }
+  return Buffer.concat([header, body]);
+}
+
+/**
+ * The 3D canvas on a grid of `cols` × `rows` points: the pixel there and whether the view picks
+ * the mesh there.
+ */
+function canvasGrid(page: Page, cols: number, rows: number): Promise<{ rgb: number[]; hit: boolean }[]> {
+  return page.evaluate(
+    ({ cols, rows }) => {
+      const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="view3d"]')!;
+      const copy = document.createElement('canvas');
+      copy.width = canvas.width;
+      copy.height = canvas.height;
+      const ctx = copy.getContext('2d', { willReadFrequently: true })!;
+      ctx.drawImage(canvas, 0, 0);
+      const box = canvas.getBoundingClientRect();
+      const out: { rgb: number[]; hit: boolean }[] = [];
+      for (let i = 0; i < rows; i++) {
+        for (let j = 0; j < cols; j++) {
+          const x = box.left + ((j + 0.5) / cols) * box.width, y = box.top + ((i + 0.5) / rows) * box.height;
+          const px = ctx.getImageData(Math.floor(((x - box.left) * canvas.width) / box.width), Math.floor(((y - box.top) * canvas.height) / box.height), 1, 1).data;
+          out.push({ rgb: [px[0], px[1], px[2]], hit: window.splinekitEditor!.surface.meshPointAt(x, y) !== null });
+        }
+      }
+      return out;
+    },
+    { cols, rows },
+  );
+}
+
+/** Mean color of the points of `grid` where `picked` (a grid of the same view) hit the mesh. */
+function meanOnMesh(grid: { rgb: number[] }[], picked: { hit: boolean }[]): number[] {
+  const on = grid.filter((_, i) => picked[i].hit);
+  return [0, 1, 2].map((k) => on.reduce((s, g) => s + g.rgb[k], 0) / on.length);
+}
+
+test('Surface mode: a mesh too large to draw in a frame shows a stand-in, then all of it, picked and traced on', async ({ page }) => {
+  test.setTimeout(180_000);
+  await openSurface(page);
+  // 627,200 triangles: more than a software rasteriser draws in a frame (the view draws it in pieces).
+  const n = 560, faces = 2 * n * n;
+  await page.getByTestId('surface-mesh-input').setInputFiles({ name: 'bumpy-torus.ply', mimeType: 'application/octet-stream', buffer: bumpyTorusPLY(n) });
+  // The first frame that shows it shows its stand-in (the camera has not been still long enough).
+  const first = await page.waitForFunction(
+    () => {
+      const s = window.splinekitEditor!.surface.state();
+      return s.file === 'bumpy-torus.ply' ? s.pictureTriangles : null;
+    },
+    undefined,
+    { timeout: 120_000, polling: 'raf' },
+  );
+  const proxyTriangles = (await first.jsonValue()) as number;
+  expect(proxyTriangles).toBeGreaterThan(1000);
+  expect(proxyTriangles).toBeLessThan(faces / 4);
+  await frames(page);
+  const proxyGrid = await canvasGrid(page, 40, 25);
+
+  // Once still, the picture is the whole mesh; picking works (the hierarchy came from the worker).
+  await page.waitForFunction((f) => {
+    const s = window.splinekitEditor!.surface.state();
+    return s.meshReady && s.pictureTriangles === f;
+  }, faces, { timeout: 120_000 });
+  let s = await settled(page);
+  expect(s.meshInfo?.faces).toBe(faces);
+  const grid = await canvasGrid(page, 40, 25);
+  const background = [0x1b, 0x1d, 0x21];
+  const isBackground = (rgb: number[]) => rgb.every((c, k) => Math.abs(c - background[k]) <= 3);
+  const hits = grid.filter((g) => g.hit).length;
+  expect(hits, 'grid points on the mesh').toBeGreaterThan(200);
+  // Where the mesh is picked, it is drawn (no piece left out), and only there (silhouette pixels aside).
+  const mismatched = grid.filter((g) => g.hit === isBackground(g.rgb)).length;
+  expect(mismatched, 'grid points where the picture and picking disagree').toBeLessThanOrEqual(3);
+  // Drawn in the screen's colors, as the stand-in was (not darker, not lighter: same lighting).
+  // (the stand-in is shown before the picking hierarchy comes: its grid is read where this one hits)
+  const full = meanOnMesh(grid, grid), proxy = meanOnMesh(proxyGrid, grid);
+  for (let k = 0; k < 3; k++) expect(Math.abs(full[k] - proxy[k]), `mean channel ${k} of the mesh, all of it against its stand-in`).toBeLessThan(12);
+
+  // A spline drawn on it is traced on its faces and drawn over it.
+  s = await drawSpline(page, [
+    [0.29, 0.4],
+    [0.39, 0.24],
+    [0.55, 0.2],
+  ]);
+  expect(s.splines).toHaveLength(1);
+  await expectOnMesh(page, s.splines[0], s.scale!);
+  await page.waitForFunction((f) => window.splinekitEditor!.surface.state().pictureTriangles === f, faces);
+  await frames(page);
+  const [curve, selected] = await page.evaluate(() => {
+    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="view3d"]')!;
+    const copy = document.createElement('canvas');
+    copy.width = canvas.width;
+    copy.height = canvas.height;
+    const ctx = copy.getContext('2d', { willReadFrequently: true })!;
+    ctx.drawImage(canvas, 0, 0);
+    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+    const near = (i: number, [r, g, b]: number[]) => Math.abs(data[i] - r) <= 24 && Math.abs(data[i + 1] - g) <= 24 && Math.abs(data[i + 2] - b) <= 24;
+    let a = 0, b = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (near(i, [0xe8, 0x59, 0x0c])) a++;
+      if (near(i, [0x18, 0x64, 0xab])) b++;
+    }
+    return [a, b];
+  });
+  expect(curve + selected, 'pixels of the curve over the mesh').toBeGreaterThan(100);
+});

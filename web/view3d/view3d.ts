@@ -1,7 +1,10 @@
 import {
+  AlwaysDepth,
+  Box3,
   BufferAttribute,
   BufferGeometry,
   Color,
+  DepthTexture,
   DirectionalLight,
   DoubleSide,
   Group,
@@ -10,14 +13,19 @@ import {
   MeshStandardMaterial,
   PerspectiveCamera,
   Scene,
+  ShaderMaterial,
+  SRGBColorSpace,
   Sphere,
   Vector2,
   Vector3,
   WebGLRenderer,
+  WebGLRenderTarget,
   MOUSE,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { FullScreenQuad } from 'three/examples/jsm/postprocessing/Pass.js';
 import { Emitter } from '../app/events.js';
+import type { MeshBounds } from './bounds.js';
 import { TriangleBVH, type BVHArrays, type RayHit } from './bvh.js';
 import { softwareWebGL } from './gl-info.js';
 import { FrameScheduler } from '../app/frames.js';
@@ -68,6 +76,74 @@ const BACKGROUND = 0x1b1d21;
 const MESH_COLOR = 0xc4bcaf;
 /** Pixels the pointer may travel and still make a click. */
 const CLICK_SLOP = 4;
+/**
+ * Triangles a software rasteriser draws in ~30 ms (SwiftShader: ~0.2 µs a triangle on these
+ * machines, when nothing else runs). A mesh of more is drawn in pieces, one a frame (see render()); a GPU draws any
+ * mesh in one.
+ */
+const SOFTWARE_TRIANGLES_PER_FRAME = 150_000;
+/** The camera must have been still this long (ms) before the full mesh is drawn piece by piece. */
+const SETTLE_MS = 120;
+
+/** A coarse stand-in for a large mesh (web/view3d/proxy.ts) with its smooth normals. */
+export interface MeshProxyArrays {
+  positions: Float32Array;
+  triangles: Uint32Array;
+  normals: Float32Array;
+}
+
+/**
+ * A mesh too large to draw in a frame: its proxy is drawn while the camera moves; once it is
+ * still, the mesh is drawn into `target` (color and depth) a piece a frame, and when all of it is
+ * there, frames copy the target to the screen and draw the mode's layers over it (depth tested
+ * against the mesh's depth), so a curve edit does not draw the mesh again.
+ */
+interface Detail {
+  proxy: Mesh;
+  /**
+   * The mesh in pieces of up to trianglesPerFrame consecutive triangles: their own index buffers,
+   * the mesh's vertex buffers (so each piece's frame uploads only its indices).
+   */
+  pieces: Mesh[];
+  /** The vertex buffers are on the GPU (uploaded in a frame of their own, before the first piece). */
+  uploaded: boolean;
+  target: WebGLRenderTarget;
+  /** Pieces of the mesh drawn into the target for the current view. */
+  drawn: number;
+  /** When the view last changed (performance.now()). */
+  changedAt: number;
+  /** The screen must be drawn again (the layers or the view changed). */
+  stale: boolean;
+  /** The screen shows the mesh (else the proxy). */
+  full: boolean;
+  /**
+   * Signalled when the GPU has drawn the last piece sent. The next piece waits for it: a WebGL
+   * draw returns before it is done, and the frame that next draws on screen would wait for every
+   * piece sent before it (a software rasteriser works through them only then).
+   */
+  fence: WebGLSync | null;
+  timer: ReturnType<typeof setTimeout> | 0;
+}
+
+/** Copies a render target's color and depth to the screen (the depth, so layers are hidden by the mesh). */
+function copyMaterial(): ShaderMaterial {
+  return new ShaderMaterial({
+    uniforms: { tColor: { value: null }, tDepth: { value: null } },
+    vertexShader: 'varying vec2 vUv; void main() { vUv = uv; gl_Position = vec4(position.xy, 0.0, 1.0); }',
+    // (only where the mesh is: the background is the screen's own clear color)
+    fragmentShader: `uniform sampler2D tColor; uniform sampler2D tDepth; varying vec2 vUv;
+      void main() {
+        float depth = texture2D(tDepth, vUv).x;
+        if (depth >= 1.0) discard;
+        gl_FragColor = texture2D(tColor, vUv);
+        gl_FragDepth = depth;
+        #include <colorspace_fragment>
+      }`,
+    depthTest: true,
+    depthFunc: AlwaysDepth,
+    depthWrite: true,
+  });
+}
 
 /** A mesh shown by the view: its geometry in file order, so face indices are the file's. */
 export interface ShownMesh {
@@ -105,6 +181,12 @@ export class View3D {
   private bvh: TriangleBVH | null = null;
   /** The picking hierarchy comes later (setPicking). */
   private pickingLater = false;
+  /** Triangles drawn in one frame at most (larger meshes with a proxy are drawn over frames). */
+  private readonly trianglesPerFrame: number;
+  private detail: Detail | null = null;
+  /** The orbit controls are being dragged. */
+  private orbiting = false;
+  private copy: FullScreenQuad | null = null;
   private readonly frames = new FrameScheduler((time) => {
     this.events.emit('prerender', time);
     this.render();
@@ -116,6 +198,7 @@ export class View3D {
   constructor(readonly container: HTMLElement) {
     // Multisampled on a GPU; not on a software rasteriser, where it would double a big mesh's frame.
     this.renderer = new WebGLRenderer({ antialias: !softwareWebGL(), preserveDrawingBuffer: true, powerPreference: 'high-performance' });
+    this.trianglesPerFrame = softwareWebGL() ? SOFTWARE_TRIANGLES_PER_FRAME : Infinity;
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.renderer.setClearColor(new Color(BACKGROUND), 1);
     const canvas = this.renderer.domElement;
@@ -152,6 +235,13 @@ export class View3D {
     this.controls.screenSpacePanning = true;
     this.controls.mouseButtons = { LEFT: MOUSE.ROTATE, MIDDLE: MOUSE.ROTATE, RIGHT: MOUSE.PAN };
     this.controls.addEventListener('change', () => this.viewChanged());
+    // A large mesh is not drawn in pieces while the user orbits (only once the camera is let go).
+    this.controls.addEventListener('start', () => (this.orbiting = true));
+    this.controls.addEventListener('end', () => {
+      this.orbiting = false;
+      this.redrawMesh();
+      this.requestRender();
+    });
 
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
@@ -178,9 +268,15 @@ export class View3D {
 
   /**
    * Shows a mesh (positions xyz, triangles in file order). Smooth normals and the picking
-   * hierarchy are computed unless given (a worker can make them). `fit` frames the mesh.
+   * hierarchy (and the bounds) are computed unless given (a worker can make them). `fit` frames the mesh. A
+   * `proxy` is drawn instead while the camera moves if the mesh has more triangles than the
+   * renderer draws in a frame (the still picture is the mesh, drawn over a few frames).
    */
-  setMesh(positions: Float32Array, triangles: Uint32Array, options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays | 'later' } = {}): ShownMesh {
+  setMesh(
+    positions: Float32Array,
+    triangles: Uint32Array,
+    options: { fit?: boolean; normals?: Float32Array; bvh?: BVHArrays | 'later'; proxy?: MeshProxyArrays | null; bounds?: MeshBounds } = {},
+  ): ShownMesh {
     const fit = options.fit ?? true;
     this.clearMesh();
     const geometry = new BufferGeometry();
@@ -188,13 +284,46 @@ export class View3D {
     geometry.setIndex(new BufferAttribute(triangles, 1));
     if (options.normals && options.normals.length === positions.length) geometry.setAttribute('normal', new BufferAttribute(options.normals, 3));
     else geometry.computeVertexNormals();
-    geometry.computeBoundingSphere();
-    geometry.computeBoundingBox();
+    if (options.bounds) {
+      const [x0, y0, z0, x1, y1, z1] = options.bounds.box;
+      geometry.boundingBox = new Box3(new Vector3(x0, y0, z0), new Vector3(x1, y1, z1));
+      geometry.boundingSphere = new Sphere(geometry.boundingBox.getCenter(new Vector3()), options.bounds.radius);
+    } else {
+      geometry.computeBoundingSphere();
+      geometry.computeBoundingBox();
+    }
     const bb = geometry.boundingBox!;
     const sphere = geometry.boundingSphere ?? new Sphere(new Vector3(), 1);
     this.meshObject = new Mesh(geometry, this.material);
     this.meshObject.name = 'surface-mesh';
     this.scene.add(this.meshObject);
+    const proxy = options.proxy;
+    if (proxy && triangles.length / 3 > this.trianglesPerFrame && proxy.triangles.length < triangles.length) {
+      const g = new BufferGeometry();
+      g.setAttribute('position', new BufferAttribute(proxy.positions, 3));
+      g.setAttribute('normal', new BufferAttribute(proxy.normals, 3));
+      g.setIndex(new BufferAttribute(proxy.triangles, 1));
+      const object = new Mesh(g, this.material);
+      object.name = 'surface-mesh-proxy';
+      object.visible = false;
+      this.scene.add(object);
+      this.meshObject.visible = false; // (drawn as its pieces)
+      const pieces: Mesh[] = [];
+      for (let start = 0; start < triangles.length; start += 3 * this.trianglesPerFrame) {
+        const piece = new BufferGeometry();
+        piece.setAttribute('position', geometry.getAttribute('position'));
+        piece.setAttribute('normal', geometry.getAttribute('normal'));
+        piece.setIndex(new BufferAttribute(triangles.subarray(start, start + 3 * this.trianglesPerFrame), 1));
+        piece.boundingSphere = sphere.clone(); // (not computed again from all the positions)
+        const m = new Mesh(piece, this.material);
+        m.visible = false;
+        pieces.push(m);
+        this.scene.add(m);
+      }
+      const target = new WebGLRenderTarget(1, 1, { depthTexture: new DepthTexture(1, 1) });
+      target.texture.colorSpace = SRGBColorSpace;
+      this.detail = { proxy: object, pieces, uploaded: false, target, drawn: 0, changedAt: performance.now(), stale: true, full: false, fence: null, timer: 0 };
+    }
     // 'later': a worker sends it (setPicking); until then nothing is picked and everything is seen.
     this.pickingLater = options.bvh === 'later';
     this.bvh = this.pickingLater ? null : new TriangleBVH(positions, triangles, options.bvh === 'later' ? undefined : options.bvh);
@@ -237,11 +366,23 @@ export class View3D {
     m.geometry.computeVertexNormals();
     m.geometry.computeBoundingSphere();
     this.bvh = null;
+    this.redrawMesh();
     this.requestRender();
   }
 
   clearMesh(): void {
     if (!this.meshObject) return;
+    const d = this.detail;
+    if (d) {
+      clearTimeout(d.timer);
+      if (d.fence) (this.renderer.getContext() as WebGL2RenderingContext).deleteSync(d.fence);
+      this.scene.remove(d.proxy, ...d.pieces);
+      d.proxy.geometry.dispose();
+      for (const piece of d.pieces) piece.geometry.dispose();
+      d.target.depthTexture?.dispose();
+      d.target.dispose();
+      this.detail = null;
+    }
     this.scene.remove(this.meshObject);
     this.meshObject.geometry.dispose();
     this.meshObject = null;
@@ -255,6 +396,7 @@ export class View3D {
     if (this.material.flatShading === flat) return;
     this.material.flatShading = flat;
     this.material.needsUpdate = true;
+    this.redrawMesh();
     this.requestRender();
   }
 
@@ -344,7 +486,27 @@ export class View3D {
   }
 
   requestRender(): void {
+    if (this.detail) this.detail.stale = true;
     this.frames.request();
+  }
+
+  /**
+   * How much of the shown mesh the picture on screen has: all its triangles, or (a large mesh
+   * while the camera moves, or until it is drawn in full) its proxy's; 0 without a mesh.
+   */
+  get pictureTriangles(): number {
+    const m = this.meshObject;
+    if (!m) return 0;
+    const d = this.detail;
+    return (d && !d.full ? d.proxy : m).geometry.index!.count / 3;
+  }
+
+  /** What the mesh looks like changed (the camera, the canvas size, the shading): a large one is drawn again. */
+  private redrawMesh(): void {
+    const d = this.detail;
+    if (!d) return;
+    d.drawn = 0;
+    d.changedAt = performance.now();
   }
 
   /** Resolves once the next frame has been drawn. */
@@ -355,13 +517,88 @@ export class View3D {
   render(): void {
     if (!this.visible) return;
     this.updateClipping();
-    this.renderer.render(this.scene, this.camera);
+    if (this.detail) this.renderInPieces(this.detail);
+    else this.renderer.render(this.scene, this.camera);
+  }
+
+  /**
+   * A frame of a mesh too large to draw in one (see Detail): the proxy on screen until the mesh
+   * is in the target, then the target and the layers; meanwhile, once the camera has been still
+   * for SETTLE_MS, one piece of the mesh into the target per frame, each once the GPU is done with
+   * the one before.
+   */
+  private renderInPieces(d: Detail): void {
+    const r = this.renderer, all = d.pieces.length, gl = r.getContext() as WebGL2RenderingContext;
+    const size = r.getDrawingBufferSize(new Vector2());
+    if (d.target.width !== size.x || d.target.height !== size.y) {
+      d.target.setSize(size.x, size.y);
+      d.drawn = 0;
+    }
+    // (a fence's status changes between tasks: it is asked again next frame)
+    if (d.fence && gl.getSyncParameter(d.fence, gl.SYNC_STATUS) === gl.SIGNALED) {
+      gl.deleteSync(d.fence);
+      d.fence = null;
+      if (d.drawn >= all) d.stale = true; // all of it is drawn: on screen now
+    }
+    if (d.stale) {
+      d.stale = false;
+      d.full = d.drawn >= all && !d.fence;
+      if (d.full) {
+        this.copy ??= new FullScreenQuad(copyMaterial());
+        const material = this.copy.material as ShaderMaterial;
+        material.uniforms.tColor.value = d.target.texture;
+        material.uniforms.tDepth.value = d.target.depthTexture;
+        this.copy.render(r);
+        r.autoClear = false;
+        r.render(this.scene, this.camera);
+        r.autoClear = true;
+      } else {
+        d.proxy.visible = true;
+        r.render(this.scene, this.camera);
+        d.proxy.visible = false;
+      }
+    }
+    if (d.fence) {
+      this.frames.request();
+      return;
+    }
+    if (d.drawn >= all || this.orbiting) return;
+    const wait = d.changedAt + SETTLE_MS - performance.now();
+    if (wait > 0) {
+      clearTimeout(d.timer);
+      d.timer = setTimeout(() => this.frames.request(), wait);
+      return;
+    }
+    const piece = d.pieces[d.drawn];
+    this.layer.visible = false;
+    piece.visible = true;
+    r.setRenderTarget(d.target);
+    if (!d.uploaded) {
+      // A frame that draws nothing but uploads the vertex buffers (with the first piece's indices).
+      piece.geometry.setDrawRange(0, 0);
+      r.render(this.scene, this.camera);
+      piece.geometry.setDrawRange(0, Infinity);
+      d.uploaded = true;
+    } else {
+      if (d.drawn === 0) r.clear();
+      r.autoClear = false;
+      r.render(this.scene, this.camera);
+      r.autoClear = true;
+      d.drawn++;
+    }
+    r.setRenderTarget(null);
+    piece.visible = false;
+    this.layer.visible = true;
+    d.fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    gl.flush();
+    this.frames.request();
   }
 
   dispose(): void {
     this.frames.cancel();
     this.controls.dispose();
     this.clearMesh();
+    (this.copy?.material as ShaderMaterial | undefined)?.dispose();
     this.material.dispose();
     this.renderer.dispose();
     this.canvas.remove();
@@ -382,6 +619,7 @@ export class View3D {
   }
 
   private viewChanged(): void {
+    this.redrawMesh();
     this.events.emit('view', null);
     this.requestRender();
   }

@@ -107,8 +107,9 @@ export class MeshSessions {
 
   /** Opens a mesh file's bytes: a mesh opened before comes back with its drawing. */
   async openBytes(bytes: Uint8Array, name: string, options: { sample: boolean; undoable: boolean }): Promise<boolean> {
-    const key = `${contentHash(bytes)}:${name}`;
-    const target = this.sessions.get(key) ?? new SurfaceSession(name, bytes, options.sample);
+    const hash = contentHash(bytes);
+    const key = `${hash}:${name}`;
+    const target = this.sessions.get(key) ?? new SurfaceSession(name, bytes, options.sample, hash);
     const previous = this._current;
     if (target === previous) return true;
     const ok = await this.show(target);
@@ -155,7 +156,7 @@ export class MeshSessions {
       };
       const loaded = await this.mode.client.load(target.bytes, target.file, (reply) => {
         generation = ++this._generation;
-        this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh ?? 'later' });
+        this.mode.view!.setMesh(reply.positions, reply.triangles, { fit: true, normals: reply.normals, bvh: reply.bvh ?? 'later', proxy: reply.proxy, bounds: reply.bounds });
         shown = this._mesh = { info: reply.info, scale: reply.scale, loadMs: reply.ms, ready: false };
         if (!this.sessions.has(target.key)) {
           this.sessions.set(target.key, target);

@@ -1,3 +1,4 @@
+import type { MeshBounds } from '../../view3d/bounds.js';
 import type { BVHArrays } from '../../view3d/bvh.js';
 import type { MeshInfo, MeshPoint, SurfaceSplineJSON, TraceOptions } from '../../../src/index.js';
 import type { ErrorReply } from '../../app/worker-host.js';
@@ -82,6 +83,13 @@ export type SurfaceReply =
       triangles: Uint32Array;
       /** Smooth vertex normals (area weighted). */
       normals: Float32Array;
+      /**
+       * A coarse stand-in of a large mesh (web/view3d/proxy.ts), for the view to draw while the
+       * mesh moves or is not yet drawn in full; null for a mesh small enough to draw every frame.
+       */
+      proxy: { positions: Float32Array; triangles: Uint32Array; normals: Float32Array } | null;
+      /** Bounding box and sphere of the positions. */
+      bounds: MeshBounds;
       /** The picking hierarchy, built here so the editor does not have to (null: in a 'picking' reply next). */
       bvh: BVHArrays | null;
       scale: number;

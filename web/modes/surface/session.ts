@@ -18,8 +18,10 @@ export class SurfaceSession {
     readonly bytes: Uint8Array,
     /** Opened from the sample list (a reload fetches it again instead of storing it). */
     readonly sample: boolean,
+    /** contentHash(bytes), when the caller has it (hashing a 2M-triangle mesh takes ~50 ms). */
+    hash?: string,
   ) {
-    this.hash = contentHash(bytes);
+    this.hash = hash ?? contentHash(bytes);
   }
 
   /** Identifies the mesh (file name and content). */

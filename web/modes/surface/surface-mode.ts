@@ -532,6 +532,7 @@ export class SurfaceMode implements Mode, SurfaceContext {
       lastTraceMs: this.traces.last?.ms ?? null,
       options: this.traceOptions(),
       saved: !this.autosave.pending,
+      pictureTriangles: this._view?.pictureTriangles ?? 0,
     });
   }
 

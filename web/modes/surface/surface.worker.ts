@@ -7,6 +7,8 @@
 import { SurfaceMesh, SurfaceSpline, init, mapSplines, meshPointNormal, parseSVG, vertexNormals, type MeshPoint, type SurfaceSplineJSON } from '../../../src/index.js';
 import { serveRequests } from '../../app/worker-host.js';
 import { TriangleBVH, type BVHArrays } from '../../view3d/bvh.js';
+import { meshBounds } from '../../view3d/bounds.js';
+import { meshProxy } from '../../view3d/proxy.js';
 import type { PolygonPaths, SplineOp, SurfaceReply, SurfaceRequest, TracedPolyline } from './protocol.js';
 
 /**
@@ -42,6 +44,13 @@ async function handle(req: SurfaceRequest): Promise<void> {
 const PICKING_LATER_FACES = 250_000;
 
 /**
+ * Meshes of more faces come with a proxy of about PROXY_TRIANGLES (the view draws it while the mesh
+ * moves on a renderer too slow to draw every triangle each frame; ~80 ms to make at 2M faces).
+ */
+const PROXY_FACES = 250_000;
+const PROXY_TRIANGLES = 60_000;
+
+/**
  * Loads a mesh: the mesh itself first (posted as 'progress' for the view: the user can look and
  * orbit), then on large meshes its picking hierarchy (another 'progress'), then its search
  * structures (graph, landmarks: the larger part of the build on a large mesh), before the requests
@@ -63,10 +72,13 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   const kept = later ? { positions: positions.slice(), triangles: triangles.slice() } : null;
   const bvh = later ? null : new TriangleBVH(positions, triangles).toArrays();
   const shownNormals = normals.slice();
-  post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, bvh, scale: next.scale, ms: performance.now() - t0 }, [
+  const coarse = T.length / 3 > PROXY_FACES ? meshProxy(positions, triangles, PROXY_TRIANGLES) : null;
+  const proxy = coarse ? { ...coarse, normals: vertexNormals(coarse.positions, coarse.triangles) } : null;
+  post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, proxy, bounds: meshBounds(positions), bvh, scale: next.scale, ms: performance.now() - t0 }, [
     positions.buffer,
     triangles.buffer,
     shownNormals.buffer,
+    ...(proxy ? [proxy.positions.buffer, proxy.triangles.buffer, proxy.normals.buffer] : []),
     ...(bvh ? bvhArrays(bvh) : []),
   ]);
   if (kept) {

@@ -35,6 +35,11 @@ export interface SurfaceTestState {
   options: TraceOptions;
   /** No autosave is pending. */
   saved: boolean;
+  /**
+   * Triangles of the mesh picture on screen: the mesh's faces once it is drawn in full, fewer
+   * while a large mesh shows its proxy (moving, or not yet drawn in full).
+   */
+  pictureTriangles: number;
 }
 
 export function surfaceTestState(s: {
@@ -53,6 +58,7 @@ export function surfaceTestState(s: {
   lastTraceMs: number | null;
   options: TraceOptions;
   saved: boolean;
+  pictureTriangles: number;
 }): SurfaceTestState {
   return {
     active: s.active,
@@ -78,5 +84,6 @@ export function surfaceTestState(s: {
     lastTraceMs: s.lastTraceMs,
     options: s.options,
     saved: s.saved,
+    pictureTriangles: s.pictureTriangles,
   };
 }
