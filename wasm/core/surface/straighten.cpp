@@ -376,7 +376,9 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   std::array<Vec2, 3> cf, cg;
   // Where the walk is on the strip after entering face g from strip face `at` (-1: off it).
   auto follow_strip = [&](int at, int g) { return at >= 0 && at + 1 < n && strip_[at + 1] == g ? at + 1 : -1; };
-  auto step = [&](int e) {  // into the face across edge e of f
+  // Into the face across edge e of f. (Every face of a walk goes through it: inlined, f, cf and
+  // on_strip stay in registers.)
+  auto step = [&](int e) __attribute__((always_inline)) {
     const int g = mesh_.adjacency[f][e];
     if (g < 0) return false;
     on_strip = follow_strip(on_strip, g);
