@@ -45,7 +45,7 @@ void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vecto
 void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip) {
   start_ = start, end_ = end;
   strip_.assign(strip.begin(), strip.end());
-  frozen_.clear(), no_chain_.clear(), no_chord_.clear();
+  frozen_.clear(), frozen_cos_.clear(), no_chain_.clear(), no_chord_.clear();
   unfold_strip(mesh_, strip_, unfolded_);
   length_ = shorten(unfolded_, made_, apices_, nullptr);
 }
@@ -92,7 +92,19 @@ void Straightener::freeze(int v, double turn, PathStats* stats) {
   // Where v's angle sum is known, the path is locally shortest there for every turn up to θ − 2π.
   if (!std::isnan(angle_sums_[v]) && straight_through(v, turn)) turn = std::max(turn, angle_sums_[v] - 2 * kPi);
   frozen_.insert(v, turn);
+  const double up_to = turn + 1e-9;  // (as is_frozen compares)
+  frozen_cos_.insert(v, up_to >= kPi ? -2 : std::cos(up_to));
   if (stats) ++stats->frozen_vertices;
+}
+
+bool Straightener::surely_frozen(size_t j) const {
+  const double* bound = frozen_cos_.find(apices_[j].vertex);
+  if (!bound) return false;
+  // cos(turn) = a·b / (|a||b|) against the bound, with a margin (1e-12) far above the rounding of
+  // both and of atan2: where it holds, the turn turn_at computes is below the frozen one too.
+  const Vec2 a = apices_[j].pos - apices_[j - 1].pos, b = apices_[j + 1].pos - apices_[j].pos;
+  const double norms = a.norm() * b.norm();
+  return norms > 0 && a.dot(b) >= (*bound + 1e-12) * norms;
 }
 
 void VertexSet::insert(int v, double value) {
@@ -136,7 +148,7 @@ bool Straightener::pass(PathStats* stats) {
   // Every removable reflex vertex, largest turn first, with runs that do not touch each other.
   order_.clear();
   for (size_t j = 1; j + 1 < apices_.size(); ++j) {
-    if (apices_[j].vertex < 0) continue;
+    if (apices_[j].vertex < 0 || surely_frozen(j)) continue;
     const double turn = turn_at(apices_, j);
     if (turn > 1e-9 && !is_frozen(apices_[j].vertex, turn)) order_.emplace_back(-turn, j);
   }
@@ -364,7 +376,9 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   std::array<Vec2, 3> cf, cg;
   // Where the walk is on the strip after entering face g from strip face `at` (-1: off it).
   auto follow_strip = [&](int at, int g) { return at >= 0 && at + 1 < n && strip_[at + 1] == g ? at + 1 : -1; };
-  auto step = [&](int e) {  // into the face across edge e of f
+  // Into the face across edge e of f. (Every face of a walk goes through it: inlined, f, cf and
+  // on_strip stay in registers.)
+  auto step = [&](int e) __attribute__((always_inline)) {
     const int g = mesh_.adjacency[f][e];
     if (g < 0) return false;
     on_strip = follow_strip(on_strip, g);

@@ -167,6 +167,10 @@ class Straightener {
   bool is_frozen(int v, double turn) const;
   // Freezes v up to `turn` (infinity: for good, a vertex that cannot be flipped).
   void freeze(int v, double turn, PathStats* stats);
+  // Whether apex j's vertex is frozen for the path's turn there, told by the turn's cosine alone
+  // (false: not told; `is_frozen` on the turn decides). Most apices of a long path are frozen, and
+  // the pass then needs no atan2 for them.
+  bool surely_frozen(size_t j) const;
 
   const TriMesh& mesh_;
   std::vector<int>& face_marks_;
@@ -190,6 +194,9 @@ class Straightener {
   // Vertices frozen (with the largest turn they are frozen for), and those whose zipper / chord
   // did not shorten the path (they get the semi-star from then on).
   VertexSet frozen_, no_chain_, no_chord_;
+  // Per frozen vertex, the cosine of the largest turn it is frozen for (with is_frozen's 1e-9), or
+  // -2 when that is π or more (frozen for every turn).
+  VertexSet frozen_cos_;
   // This pass's flips (the first used_ of flips_), its vertices by turn, and the flips tried.
   std::vector<Flip> flips_;
   size_t used_ = 0;

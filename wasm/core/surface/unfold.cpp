@@ -155,7 +155,14 @@ void append_moved(UnfoldedStrip& u, const UnfoldedStrip& src, size_t from, size_
     u.corners.insert(u.corners.end(), src.corners.begin() + from, src.corners.begin() + to);
     return;
   }
-  for (size_t i = from; i < to; ++i) u.corners.push_back(m(src.corners[i]));
+  // (Phase (iii) moves most of a strip each pass: the motion is copied so that the stores cannot
+  // alias it and it is not read again for every corner.)
+  const PlaneMotion motion = m;
+  u.corners.reserve(u.corners.size() + (to - from));
+  for (size_t i = from; i < to; ++i) {
+    const std::array<Vec2, 3>& c = src.corners[i];
+    u.corners.push_back({motion(c[0]), motion(c[1]), motion(c[2])});
+  }
 }
 
 void join(const TriMesh& mesh, UnfoldedStrip& u, size_t first) {

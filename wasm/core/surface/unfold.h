@@ -45,7 +45,9 @@ struct PlaneMotion {
   double c = 1, s = 0;
   Vec2 t = Vec2::Zero();
   bool identity() const { return c == 1 && s == 0 && t.x() == 0 && t.y() == 0; }
-  Vec2 operator()(const Vec2& x) const { return {c * x.x() - s * x.y() + t.x(), s * x.x() + c * x.y() + t.y()}; }
+  // (Written on whole columns so that both coordinates are moved at once where the target has SIMD;
+  // lane by lane it is (c x - s y + t_x, s x + c y + t_y), rounded alike.)
+  Vec2 operator()(const Vec2& x) const { return Vec2(c, s) * x.x() + Vec2(-s, c) * x.y() + t; }
   std::array<Vec2, 3> operator()(const std::array<Vec2, 3>& c3) const {
     return {(*this)(c3[0]), (*this)(c3[1]), (*this)(c3[2])};
   }
