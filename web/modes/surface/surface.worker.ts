@@ -45,7 +45,9 @@ const PICKING_LATER_FACES = 250_000;
 
 /**
  * Meshes of more faces come with a proxy of about PROXY_TRIANGLES (the view draws it while the mesh
- * moves on a renderer too slow to draw every triangle each frame; ~80 ms to make at 2M faces).
+ * moves on a renderer too slow to draw every triangle each frame; meshoptimizer's sloppy
+ * simplifier: ~95 ms to make at 2M faces, ~230 ms the first time in a worker, while its
+ * WebAssembly is still in baseline code and its memory grows).
  */
 const PROXY_FACES = 250_000;
 const PROXY_TRIANGLES = 60_000;
@@ -72,7 +74,7 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   const kept = later ? { positions: positions.slice(), triangles: triangles.slice() } : null;
   const bvh = later ? null : new TriangleBVH(positions, triangles).toArrays();
   const shownNormals = normals.slice();
-  const coarse = T.length / 3 > PROXY_FACES ? meshProxy(positions, triangles, PROXY_TRIANGLES) : null;
+  const coarse = T.length / 3 > PROXY_FACES ? await meshProxy(positions, triangles, PROXY_TRIANGLES, normals) : null;
   const proxy = coarse ? { ...coarse, normals: vertexNormals(coarse.positions, coarse.triangles) } : null;
   post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, proxy, bounds: meshBounds(positions), bvh, scale: next.scale, ms: performance.now() - t0 }, [
     positions.buffer,
