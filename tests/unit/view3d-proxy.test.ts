@@ -78,7 +78,8 @@ function bounds(P: Float32Array): { lo: Vec; hi: Vec } {
 }
 
 /**
- * What any proxy of `mesh` must be: every index in range, every vertex used, no triangle with a
+ * What any proxy of `mesh` must be: every index in range, every vertex used and one of the mesh's
+ * (the one `vertices` names), no triangle with a
  * repeated or coincident corner, the mesh's bounding box within `slack`, its area the mesh's
  * within 5%.
  */
@@ -94,6 +95,12 @@ function expectValid(proxy: MeshProxy, mesh: Mesh, slack: number): void {
     expect(Math.hypot(...f.normal)).toBeGreaterThan(0);
   }
   expect(used.every((u) => u === 1)).toBe(true);
+  // Each vertex is the mesh vertex it names.
+  expect(proxy.vertices.length).toBe(nv);
+  for (let v = 0; v < nv; v++) {
+    expect(proxy.vertices[v]).toBeLessThan(mesh.positions.length / 3);
+    expect(corner(proxy.positions, v)).toEqual(corner(mesh.positions, proxy.vertices[v]));
+  }
   const box = bounds(proxy.positions), meshBox = bounds(mesh.positions);
   for (let k = 0; k < 3; k++) {
     expect(Math.abs(box.lo[k] - meshBox.lo[k]), `low side ${k}`).toBeLessThan(slack);

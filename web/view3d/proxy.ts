@@ -13,6 +13,8 @@ import { MeshoptSimplifier } from 'meshoptimizer/simplifier';
 export interface MeshProxy {
   positions: Float32Array;
   triangles: Uint32Array;
+  /** The mesh vertex each vertex of the proxy is (for its attributes, as its smooth normal). */
+  vertices: Uint32Array;
 }
 
 /**
@@ -25,22 +27,23 @@ export interface MeshProxy {
  */
 export async function meshProxy(positions: Float32Array, triangles: Uint32Array, target: number, normals?: ArrayLike<number>): Promise<MeshProxy> {
   await MeshoptSimplifier.ready;
-  if (positions.length === 0 || triangles.length === 0) return { positions: new Float32Array(0), triangles: new Uint32Array(0) };
+  if (positions.length === 0 || triangles.length === 0) return { positions: new Float32Array(0), triangles: new Uint32Array(0), vertices: new Uint32Array(0) };
   // The error bound is relative to the mesh's extent: 1 leaves the count alone to decide.
   let [kept] = triangles.length / 3 <= target ? [triangles.slice()] : MeshoptSimplifier.simplifySloppy(triangles, positions, 3, null, 3 * Math.max(1, Math.floor(target)), 1);
   if (normals) kept = facingAlong(positions, kept, normals);
   // Only the vertices the proxy uses: a few percent of a large mesh's, so that the proxy's
   // normals, its transfer to the page and its upload cost next to nothing.
   const [remap, used] = MeshoptSimplifier.compactMesh(kept);
-  const out = new Float32Array(3 * used);
+  const out = new Float32Array(3 * used), vertices = new Uint32Array(used);
   for (let v = 0; v < remap.length; v++) {
     const w = remap[v];
     if (w === 0xffffffff) continue;
+    vertices[w] = v;
     out[3 * w] = positions[3 * v];
     out[3 * w + 1] = positions[3 * v + 1];
     out[3 * w + 2] = positions[3 * v + 2];
   }
-  return { positions: out, triangles: kept };
+  return { positions: out, triangles: kept, vertices };
 }
 
 /** The triangles of `T` (on `P`) whose normal is on the side of the sum of `N` at their corners. */

@@ -75,7 +75,9 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   const bvh = later ? null : new TriangleBVH(positions, triangles).toArrays();
   const shownNormals = normals.slice();
   const coarse = T.length / 3 > PROXY_FACES ? await meshProxy(positions, triangles, PROXY_TRIANGLES, normals) : null;
-  const proxy = coarse ? { ...coarse, normals: vertexNormals(coarse.positions, coarse.triangles) } : null;
+  // (the proxy's vertices are the mesh's: shaded with the mesh's own smooth normals, it looks
+  // like the mesh, where its own would show every fold of the clustering)
+  const proxy = coarse ? { positions: coarse.positions, triangles: coarse.triangles, normals: gather(normals, coarse.vertices) } : null;
   post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, proxy, bounds: meshBounds(positions), bvh, scale: next.scale, ms: performance.now() - t0 }, [
     positions.buffer,
     triangles.buffer,
@@ -89,6 +91,18 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   }
   const info = next.buildSearch();
   post({ type: 'loaded', id, info, ms: performance.now() - t0 });
+}
+
+/** The rows (x y z) of `rows` at `at`. */
+function gather(rows: Float32Array, at: Uint32Array): Float32Array {
+  const out = new Float32Array(3 * at.length);
+  for (let i = 0; i < at.length; i++) {
+    const r = 3 * at[i];
+    out[3 * i] = rows[r];
+    out[3 * i + 1] = rows[r + 1];
+    out[3 * i + 2] = rows[r + 2];
+  }
+  return out;
 }
 
 function needMesh(): SurfaceMesh {
