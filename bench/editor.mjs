@@ -312,7 +312,7 @@ it and two frames have been presented; the "longest stall" is the largest gap be
 animation frames in that time (how long the page froze; the generated file's are medians of
 ${r.big_runs} runs; the mesh's of ${r.mesh_runs} runs, opened once Surface mode's sample is settled and drawn, goal ≤ 3 s; the mesh is drawn, and can be
 looked at and orbited, once the worker has built it: a mesh of more triangles than the software rasteriser draws in a frame
-(150k) as a coarse stand-in (vertex clustering, ~55k triangles, made by the worker) while the camera moves, and, once it has been let go
+(150k) as a coarse stand-in (meshoptimizer's simplifySloppy, ~57k triangles, made by the worker) while the camera moves, and, once it has been let go
 for 120 ms, in full, drawn off screen a piece of 150k triangles per frame (each once the GPU has finished the one before) and then
 shown; "all of it drawn" is when the picture first is the whole mesh; "ready to trace" is when the worker has also built its search
 structures (search graph and landmarks), which traces wait for; the stall runs to the later of the two). The end-to-end tests check what these mean (the sample's

@@ -45,7 +45,9 @@ const PICKING_LATER_FACES = 250_000;
 
 /**
  * Meshes of more faces come with a proxy of about PROXY_TRIANGLES (the view draws it while the mesh
- * moves on a renderer too slow to draw every triangle each frame; ~80 ms to make at 2M faces).
+ * moves on a renderer too slow to draw every triangle each frame; meshoptimizer's sloppy
+ * simplifier: ~95 ms to make at 2M faces, ~230 ms the first time in a worker, while its
+ * WebAssembly is still in baseline code and its memory grows).
  */
 const PROXY_FACES = 250_000;
 const PROXY_TRIANGLES = 60_000;
@@ -72,8 +74,10 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   const kept = later ? { positions: positions.slice(), triangles: triangles.slice() } : null;
   const bvh = later ? null : new TriangleBVH(positions, triangles).toArrays();
   const shownNormals = normals.slice();
-  const coarse = T.length / 3 > PROXY_FACES ? meshProxy(positions, triangles, PROXY_TRIANGLES) : null;
-  const proxy = coarse ? { ...coarse, normals: vertexNormals(coarse.positions, coarse.triangles) } : null;
+  const coarse = T.length / 3 > PROXY_FACES ? await meshProxy(positions, triangles, PROXY_TRIANGLES, normals) : null;
+  // (the proxy's vertices are the mesh's: shaded with the mesh's own smooth normals, it looks
+  // like the mesh, where its own would show every fold of the clustering)
+  const proxy = coarse ? { positions: coarse.positions, triangles: coarse.triangles, normals: gather(normals, coarse.vertices) } : null;
   post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, proxy, bounds: meshBounds(positions), bvh, scale: next.scale, ms: performance.now() - t0 }, [
     positions.buffer,
     triangles.buffer,
@@ -87,6 +91,18 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   }
   const info = next.buildSearch();
   post({ type: 'loaded', id, info, ms: performance.now() - t0 });
+}
+
+/** The rows (x y z) of `rows` at `at`. */
+function gather(rows: Float32Array, at: Uint32Array): Float32Array {
+  const out = new Float32Array(3 * at.length);
+  for (let i = 0; i < at.length; i++) {
+    const r = 3 * at[i];
+    out[3 * i] = rows[r];
+    out[3 * i + 1] = rows[r + 1];
+    out[3 * i + 2] = rows[r + 2];
+  }
+  return out;
 }
 
 function needMesh(): SurfaceMesh {
