@@ -10,6 +10,7 @@ import { join } from 'node:path';
 import { chromium } from '@playwright/test';
 import { preview } from 'vite';
 import { parseSVG } from '../dist/index.js';
+import { bumpyTorusPLY } from './meshes.mjs';
 import { median } from './stats.mjs';
 
 /** Launch arguments that work headless on these machines (the same as playwright.config.ts). */
@@ -64,41 +65,6 @@ function stopStallProbe(page) {
 
 /** Triangles of the generated mesh opened in Surface mode (issue 17: opened in ≤ 3 s). */
 export const BIG_MESH_TRIANGLES = 2_000_000;
-
-/**
- * A bumpy torus of 2·n² triangles (n² vertices) as binary little-endian PLY: a closed, smooth
- * surface, so that nothing but its size matters.
- */
-export function bigMeshPLY(n) {
-  const nv = n * n, nf = 2 * nv;
-  const header = Buffer.from(`ply\nformat binary_little_endian 1.0\nelement vertex ${nv}\nproperty float x\nproperty float y\nproperty float z\nelement face ${nf}\nproperty list uchar int vertex_indices\nend_header\n`);
-  const body = Buffer.alloc(12 * nv + 13 * nf);
-  for (let i = 0; i < n; i++) {
-    for (let j = 0; j < n; j++) {
-      const u = (2 * Math.PI * i) / n, v = (2 * Math.PI * j) / n, r = 0.35 * (1 + 0.05 * Math.sin(7 * u) * Math.sin(5 * v));
-      const o = 12 * (i * n + j);
-      body.writeFloatLE((1 + r * Math.cos(v)) * Math.cos(u), o);
-      body.writeFloatLE((1 + r * Math.cos(v)) * Math.sin(u), o + 4);
-      body.writeFloatLE(r * Math.sin(v), o + 8);
-    }
-  }
-  const id = (i, j) => (i % n) * n + (j % n);
-  let o = 12 * nv;
-  const tri = (a, b, c) => {
-    body[o] = 3;
-    body.writeInt32LE(a, o + 1);
-    body.writeInt32LE(b, o + 5);
-    body.writeInt32LE(c, o + 9);
-    o += 13;
-  };
-  for (let i = 0; i < n; i++) {
-    for (let j = 0; j < n; j++) {
-      tri(id(i, j), id(i + 1, j), id(i + 1, j + 1));
-      tri(id(i, j), id(i + 1, j + 1), id(i, j + 1));
-    }
-  }
-  return Buffer.concat([header, body]);
-}
 
 /**
  * Opens `file` (a mesh) in Surface mode once its sample is shown: the time from choosing the file
@@ -225,7 +191,7 @@ export async function editorBenchmarks(root, data, { runs = 5, bigRuns = 2, mesh
   writeFileSync(bigFile, bigText);
   const bigSegments = parseSVG(bigText).stats().segments;
   const meshFile = join(bigDir, 'generated_2m_triangles.ply');
-  const meshBytes = bigMeshPLY(Math.round(Math.sqrt(BIG_MESH_TRIANGLES / 2)));
+  const meshBytes = bumpyTorusPLY(Math.round(Math.sqrt(BIG_MESH_TRIANGLES / 2)));
   writeFileSync(meshFile, meshBytes);
   try {
     for (let run = 0; run < runs; run++) {

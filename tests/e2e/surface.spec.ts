@@ -1,6 +1,7 @@
 import { readFileSync, statSync } from 'node:fs';
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.js';
+import { bumpyTorusPLY } from '../../bench/meshes.mjs';
 import { docsScreenshot, frames, openEditor, publicFile } from './helpers.js';
 
 /**
@@ -377,41 +378,6 @@ test('Surface mode: place an SVG, save and load it, a bad mesh keeps the old one
 test('Surface mode: the sample meshes are small files', () => {
   for (const f of ['pebble.ply', 'torus-knot.ply', 'vase.obj']) expect(statSync(publicFile(`samples/meshes/${f}`)).size).toBeLessThan(600_000);
 });
-
-/**
- * A bumpy torus of 2·n² triangles (n² vertices) as binary little-endian PLY, as bench/editor.mjs
- * makes its 2M-triangle mesh.
- */
-function bumpyTorusPLY(n: number): Buffer {
-  const nv = n * n, nf = 2 * nv;
-  const header = Buffer.from(`ply\nformat binary_little_endian 1.0\nelement vertex ${nv}\nproperty float x\nproperty float y\nproperty float z\nelement face ${nf}\nproperty list uchar int vertex_indices\nend_header\n`);
-  const body = Buffer.alloc(12 * nv + 13 * nf);
-  for (let i = 0; i < n; i++) {
-    for (let j = 0; j < n; j++) {
-      const u = (2 * Math.PI * i) / n, v = (2 * Math.PI * j) / n, r = 0.35 * (1 + 0.05 * Math.sin(7 * u) * Math.sin(5 * v));
-      const o = 12 * (i * n + j);
-      body.writeFloatLE((1 + r * Math.cos(v)) * Math.cos(u), o);
-      body.writeFloatLE((1 + r * Math.cos(v)) * Math.sin(u), o + 4);
-      body.writeFloatLE(r * Math.sin(v), o + 8);
-    }
-  }
-  const id = (i: number, j: number) => (i % n) * n + (j % n);
-  let o = 12 * nv;
-  const tri = (a: number, b: number, c: number) => {
-    body[o] = 3;
-    body.writeInt32LE(a, o + 1);
-    body.writeInt32LE(b, o + 5);
-    body.writeInt32LE(c, o + 9);
-    o += 13;
-  };
-  for (let i = 0; i < n; i++) {
-    for (let j = 0; j < n; j++) {
-      tri(id(i, j), id(i + 1, j), id(i + 1, j + 1));
-      tri(id(i, j), id(i + 1, j + 1), id(i, j + 1));
-    }
-  }
-  return Buffer.concat([header, body]);
-}
 
 /**
  * The 3D canvas on a grid of `cols` × `rows` points: the pixel there and whether the view picks
