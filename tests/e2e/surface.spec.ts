@@ -380,18 +380,30 @@ test('Surface mode: the sample meshes are small files', () => {
 });
 
 /**
+ * Copies the 3D canvas, as it is on screen now, into a 2D canvas the page keeps
+ * (window.__view3dCopy), for the evaluations that read its pixels.
+ */
+function copyView3d(page: Page): Promise<void> {
+  return page.evaluate(() => {
+    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="view3d"]')!;
+    const copy = document.createElement('canvas');
+    copy.width = canvas.width;
+    copy.height = canvas.height;
+    copy.getContext('2d', { willReadFrequently: true })!.drawImage(canvas, 0, 0);
+    (window as unknown as { __view3dCopy: HTMLCanvasElement }).__view3dCopy = copy;
+  });
+}
+
+/**
  * The 3D canvas on a grid of `cols` × `rows` points: the pixel there and whether the view picks
  * the mesh there.
  */
-function canvasGrid(page: Page, cols: number, rows: number): Promise<{ rgb: number[]; hit: boolean }[]> {
+async function canvasGrid(page: Page, cols: number, rows: number): Promise<{ rgb: number[]; hit: boolean }[]> {
+  await copyView3d(page);
   return page.evaluate(
     ({ cols, rows }) => {
       const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="view3d"]')!;
-      const copy = document.createElement('canvas');
-      copy.width = canvas.width;
-      copy.height = canvas.height;
-      const ctx = copy.getContext('2d', { willReadFrequently: true })!;
-      ctx.drawImage(canvas, 0, 0);
+      const ctx = (window as unknown as { __view3dCopy: HTMLCanvasElement }).__view3dCopy.getContext('2d')!;
       const box = canvas.getBoundingClientRect();
       const out: { rgb: number[]; hit: boolean }[] = [];
       for (let i = 0; i < rows; i++) {
@@ -464,14 +476,10 @@ test('Surface mode: a mesh too large to draw in a frame shows a stand-in, then a
   await expectOnMesh(page, s.splines[0], s.scale!);
   await page.waitForFunction((f) => window.splinekitEditor!.surface.state().pictureTriangles === f, faces);
   await frames(page);
+  await copyView3d(page);
   const [curve, selected] = await page.evaluate(() => {
-    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="view3d"]')!;
-    const copy = document.createElement('canvas');
-    copy.width = canvas.width;
-    copy.height = canvas.height;
-    const ctx = copy.getContext('2d', { willReadFrequently: true })!;
-    ctx.drawImage(canvas, 0, 0);
-    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+    const copy = (window as unknown as { __view3dCopy: HTMLCanvasElement }).__view3dCopy;
+    const data = copy.getContext('2d')!.getImageData(0, 0, copy.width, copy.height).data;
     const near = (i: number, [r, g, b]: number[]) => Math.abs(data[i] - r) <= 24 && Math.abs(data[i + 1] - g) <= 24 && Math.abs(data[i + 2] - b) <= 24;
     let a = 0, b = 0;
     for (let i = 0; i < data.length; i += 4) {
