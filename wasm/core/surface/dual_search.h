@@ -1,6 +1,7 @@
 // Phase (i) of a locally shortest path (b/Surf §5.1 "Point-to-point shortest path", §6.2 for the
-// refined graph): an initial strip of faces from an A* search on the dual graph (a binary heap on
-// distance + A* term; the search ends when the smallest key reaches the best arrival). The A* term
+// refined graph): an initial strip of faces from an A* search on the dual graph (a radix heap on
+// distance + A* term, common/radix_queue.h; the search ends when the smallest key reaches the best
+// arrival). The A* term
 // is the larger of the Euclidean distance to the target and the landmark bound (landmarks.h), which
 // knows the surface: on coils and folds, where the Euclidean term says little, the search then
 // expands the nodes near the path rather than the mesh. (Until 2026-12-02 the search was label
@@ -8,6 +9,7 @@
 // did not make it cheaper.)
 #pragma once
 
+#include "common/radix_queue.h"
 #include "surface/geodesic_options.h"
 #include "surface/landmarks.h"
 #include "surface/mesh.h"
@@ -109,16 +111,11 @@ class DualSearch {
     bool closed;  // expanded (never again: with the scaled landmark term the A* term is not
                   // quite consistent, and re-expanding nodes costs more than it gains)
   };
-  // Heap entries: key (dist + heuristic when pushed) and record; an entry whose key no longer
-  // matches its record's is stale and skipped.
-  struct Entry {
-    float key;
-    int record;
-    bool operator<(const Entry& o) const { return key > o.key; }  // (a min-heap with std::push_heap)
-  };
   std::vector<int> face_slot_, edge_slot_;
   std::vector<Visit> visits_;
-  std::vector<Entry> heap_;
+  // The open nodes' records by key (dist + heuristic when pushed); an entry whose key no longer
+  // matches its record's is stale and skipped.
+  RadixQueue queue_;
   std::vector<int> sources_, targets_;  // faces holding a and b
   double last_length_ = 0;
   // Face centroids in single precision (the face nodes' positions: one read instead of four).
