@@ -192,15 +192,26 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
     return slot + node - first;
   };
   auto key = [&](const Visit& v) { return v.dist + v.heuristic; };
-  // Relaxes `node` (on edge e) from `from` at `at`, `d_from` from the source.
-  auto relax = [&](int node, int e, int from, const Eigen::Vector3f& at, float d_from) {
-    const int r = visit(node, e);
+  // Relaxes record r (a node) from node `from` at `at`, `d_from` from the source.
+  auto relax_record = [&](int r, int from, const Eigen::Vector3f& at, float d_from) {
     Visit& v = visits_[r];
+    if (v.closed) return;
     const float d = d_from + (v.position - at).norm();
-    if (v.closed || d >= v.dist) return;
+    if (d >= v.dist) return;
     v.dist = d;
     v.parent = from;
     queue.push(key(v), r);
+  };
+  // Relaxes `node` (on edge e) from `from` at `at`, `d_from` from the source.
+  auto relax = [&](int node, int e, int from, const Eigen::Vector3f& at, float d_from) {
+    relax_record(visit(node, e), from, at, d_from);
+  };
+  // Relaxes every node of edge e likewise: the edge's records are consecutive (most of the refined
+  // search's links: an edge node's expansion relaxes two edges of each of its two faces).
+  auto relax_edge = [&](int e, int from, const Eigen::Vector3f& at, float d_from) {
+    const int first = graph_.first_node(e), count = graph_.end_node(e) - first;
+    const int r0 = visit(first, e);
+    for (int r = r0; r < r0 + count; ++r) relax_record(r, from, at, d_from);
   };
   // The nodes of face f a path goes on to: in the dual graph its centroid (each(f, -1)); in the
   // refined graph the nodes on its edges but those on `skip_edge` (each(node, edge)). The refined
@@ -261,8 +272,14 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
       int faces[2];
       node_faces(mesh_, graph_, u, faces);
       const int e = graph_.edge_of_node(u);
-      for (int f : faces)
-        if (f >= 0) expand_face(f, e);
+      for (int f : faces) {
+        if (f < 0) continue;
+        arrive(f);
+        for (int k = 0; k < 3; ++k) {
+          const int other = graph_.halfedge_edge[3 * f + k];
+          if (other != e) relax_edge(other, u, pu, du);
+        }
+      }
     }
   }
   if (stats) ++stats->searches, stats->visited_nodes += visited;
