@@ -106,6 +106,12 @@ Vec3 DualSearch::node_position(int node, int e) const {
   return (1 - s) * mesh_.positions[t[h % 3]] + s * mesh_.positions[t[(h % 3 + 1) % 3]];
 }
 
+float DualSearch::edge_length(int e) const {
+  const int h = graph_.edge_halfedge[e];
+  const auto& t = mesh_.triangles[h / 3];
+  return static_cast<float>((mesh_.positions[t[(h % 3 + 1) % 3]] - mesh_.positions[t[h % 3]]).norm());
+}
+
 // The faces of a node: itself, or the one or two faces of its edge.
 static void node_faces(const TriMesh& mesh, const DualGraph& graph, int node, int faces[2]) {
   if (node < graph.faces) {
@@ -126,6 +132,110 @@ int DualSearch::link_face(int a, int b) const {
       if (x >= 0 && x == y) return x;
   return -1;
 }
+
+namespace {
+
+// Straight runs through the refined graph (the refined search's windows). A node reached across a
+// chain of faces keeps a pseudo-source σ (the source point, or a node where the path bent), laid
+// flat with those faces, its distance d(σ), and the stretch [lo, hi] of the node's own edge through
+// which σ sees straight along the whole chain: every point of that stretch is at distance
+// d(σ) + |σ - x| by a straight segment on the unfolded faces. Going on into the next face f, a node
+// p of f that σ sees through the stretch gets d(σ) + |σ - p| (a real path on the surface, no longer
+// than the graph's hops through the node), and its own stretch is where the cone from σ through
+// [lo, hi] meets p's edge; a node that σ does not see gets the hop from the node, with the node as
+// its pseudo-source. The window of Mitchell, Mount & Papadimitriou ("The discrete geodesic
+// problem", SIAM J. Comput. 16(4), 1987), one per node: distances follow the surface's straight
+// lines rather than the graph's zigzag across nodes spaced a fifth of an edge apart, which on thin
+// tubes and long faces (a limb, a coil) is what made the search pick a path a few percent longer
+// than a neighbouring one.
+//
+// In f's plane, with the edge e from A to B along unit x and unit y across it into f, σ lies at
+// (xs, ys) with ys <= 0 (behind e, or on it).
+struct Window {
+  Eigen::Vector3f a, x, y;
+  float xs = 0, ys = 0, dist = 0, lo = 0, hi = 0, length = 0;
+  // Distances to e's ends A and B, by straight runs from σ when its window reaches them (infinity
+  // otherwise): a path that σ does not see straight may bend round them.
+  float to_a = std::numeric_limits<float>::infinity(), to_b = std::numeric_limits<float>::infinity();
+  bool valid = false;
+  // The window of node record `v` on the edge of half-edge h (3g + k), going on into face f; none
+  // (distance() infinite) when `use` is false.
+  Window(const TriMesh& mesh, int h, int f, const DualSearch::Visit& v, bool use) {
+    if (!use) return;
+    const auto& t = mesh.triangles[h / 3];
+    a = mesh.positions[t[h % 3]].cast<float>();
+    x = mesh.positions[t[(h % 3 + 1) % 3]].cast<float>() - a;
+    length = x.norm();
+    const auto& tf = mesh.triangles[f];
+    int c = 0;
+    while (c < 2 && (tf[c] == t[h % 3] || tf[c] == t[(h % 3 + 1) % 3])) ++c;
+    const Eigen::Vector3f ac = mesh.positions[tf[c]].cast<float>() - a;
+    if (!(length > 0)) return;
+    x /= length;
+    y = ac - ac.dot(x) * x;
+    const float height = y.norm();
+    if (!(height > 0)) return;
+    y /= height;
+    const Eigen::Vector3f as = v.source - a;
+    xs = as.dot(x);
+    ys = -(as - xs * x).norm();
+    dist = v.source_dist, lo = v.lo, hi = v.hi;
+    valid = true;
+    const float slack = 1e-5f * length;
+    if (lo <= slack) to_a = dist + std::sqrt(xs * xs + ys * ys);
+    if (hi >= length - slack) to_b = dist + std::sqrt((length - xs) * (length - xs) + ys * ys);
+  }
+  // Around e's ends: the shorter way to p of f by A or B (a vertex of f, which sees all of f), and
+  // which (0: A, 1: B); infinity when the window reaches neither.
+  float around(const Eigen::Vector3f& p, int& end) const {
+    const float via_a = to_a + (p - a).norm(), via_b = to_b + (p - (a + length * x)).norm();
+    end = via_b < via_a ? 1 : 0;
+    return std::min(via_a, via_b);
+  }
+  // Where the segment from σ to the point (px, py) of f crosses e's line (x along e).
+  float crossing(float px, float py) const { return ys < 0 ? xs + (px - xs) * (-ys / (py - ys)) : xs; }
+  // d(σ) + |σ - p| for p on f when σ sees p through [lo, hi], else infinity.
+  float distance(const Eigen::Vector3f& p) const {
+    if (!valid) return std::numeric_limits<float>::infinity();
+    const Eigen::Vector3f ap = p - a;
+    const float px = ap.dot(x), py = std::max(0.f, ap.dot(y));
+    const float c = crossing(px, py), slack = 1e-5f * (hi - lo + 1e-6f);
+    if (!(c >= lo - slack && c <= hi + slack)) return std::numeric_limits<float>::infinity();
+    return dist + std::sqrt((px - xs) * (px - xs) + (py - ys) * (py - ys));
+  }
+  // Node record v, on the edge of half-edge h of f, just reached through this window: its
+  // pseudo-source (σ laid in f's plane), distance and stretch (the cone's trace on its edge).
+  void pass_on(const TriMesh& mesh, int h, DualSearch::Visit& v) const {
+    v.source = a + xs * x + ys * y;
+    v.source_dist = dist;
+    const auto& t = mesh.triangles[h / 3];
+    const Eigen::Vector3f q0 = mesh.positions[t[h % 3]].cast<float>() - a,
+                          q1 = mesh.positions[t[(h % 3 + 1) % 3]].cast<float>() - a;
+    const float x0 = q0.dot(x), y0 = std::max(0.f, q0.dot(y)), x1 = q1.dot(x), y1 = std::max(0.f, q1.dot(y));
+    const float length = (q1 - q0).norm();
+    // Along the edge, s in [0, length]: crossing(s) is monotone; the stretch is where it lies in
+    // [lo, hi]. Solve crossing(s) = c for c = lo, hi: (x(s) - xs)(-ys) = (c - xs)(y(s) - ys).
+    auto at = [&](float c) {
+      const float dx = x1 - x0, dy = y1 - y0;
+      const float num = (c - xs) * (y0 - ys) + (x0 - xs) * ys, den = -ys * dx - (c - xs) * dy;
+      return den != 0 ? length * (num / den) : std::numeric_limits<float>::quiet_NaN();
+    };
+    if (!(ys < 0)) {  // σ on e: it sees all of f
+      v.lo = 0, v.hi = length;
+      return;
+    }
+    float s0 = at(lo), s1 = at(hi);
+    if (std::isnan(s0) || std::isnan(s1)) {
+      v.lo = 0, v.hi = length;
+      return;
+    }
+    if (s0 > s1) std::swap(s0, s1);
+    // The node itself is seen: the stretch holds it (up to rounding).
+    v.lo = std::clamp(s0, 0.f, length), v.hi = std::clamp(s1, 0.f, length);
+  }
+};
+
+}  // namespace
 
 bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats,
                                SearchGraph graph) {
@@ -174,8 +284,8 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
       if (slot < 0) {
         const Vec3 p = node_position(node, -1);
         slot = static_cast<int>(visits_.size());
-        visits_.push_back(
-            {std::numeric_limits<float>::infinity(), heuristic(p, node), node, -1, p.cast<float>(), false});
+        visits_.push_back({std::numeric_limits<float>::infinity(), heuristic(p, node), node, -1, p.cast<float>(), false,
+                           -1, Eigen::Vector3f::Zero(), 0.f, 0.f, 0.f});
       }
       return slot;
     }
@@ -186,7 +296,8 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
       const int f = graph_.edge_halfedge[e] / 3;
       for (int n = first, end = graph_.end_node(e); n < end; ++n) {
         const Vec3 p = node_position(n, e);
-        visits_.push_back({std::numeric_limits<float>::infinity(), heuristic(p, f), n, -1, p.cast<float>(), false});
+        visits_.push_back({std::numeric_limits<float>::infinity(), heuristic(p, f), n, -1, p.cast<float>(), false, -1,
+                           Eigen::Vector3f::Zero(), 0.f, 0.f, 0.f});
       }
     }
     return slot + node - first;
@@ -206,13 +317,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   auto relax = [&](int node, int e, int from, const Eigen::Vector3f& at, float d_from) {
     relax_record(visit(node, e), from, at, d_from);
   };
-  // Relaxes every node of edge e likewise: the edge's records are consecutive (most of the refined
-  // search's links: an edge node's expansion relaxes two edges of each of its two faces).
-  auto relax_edge = [&](int e, int from, const Eigen::Vector3f& at, float d_from) {
-    const int first = graph_.first_node(e), count = graph_.end_node(e) - first;
-    const int r0 = visit(first, e);
-    for (int r = r0; r < r0 + count; ++r) relax_record(r, from, at, d_from);
-  };
+
   // The nodes of face f a path goes on to: in the dual graph its centroid (each(f, -1)); in the
   // refined graph the nodes on its edges but those on `skip_edge` (each(node, edge)). The refined
   // search leaves the centroids out: a centroid lies on one face only, so a path through it joins
@@ -236,7 +341,13 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   float best = std::numeric_limits<float>::infinity();
 
   const Eigen::Vector3f paf = pa.cast<float>();
-  for (int s : sources) for_face_nodes(s, -1, [&](int node, int e) { relax(node, e, -1, paf, 0.f); });
+  for (int s : sources)
+    for_face_nodes(s, -1, [&](int node, int e) {
+      relax(node, e, -1, paf, 0.f);
+      if (e < 0) return;
+      Visit& v = visits_[visit(node, e)];
+      if (v.parent == -1 && v.via < 0) v.via = s, v.source = paf, v.source_dist = 0, v.lo = 0, v.hi = edge_length(e);
+    });
 
   int visited = 0;
   while (!queue.empty()) {
@@ -274,10 +385,40 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
       const int e = graph_.edge_of_node(u);
       for (int f : faces) {
         if (f < 0) continue;
-        arrive(f);
+        // On into f: straight from u's pseudo-source where it sees through u's window, else from u.
+        const Visit& vu = visits_[r];
+        const Window window(mesh_, graph_.edge_halfedge[e], f, vu, f != vu.via && vu.via >= 0);
+        if (is_target(f)) {
+          int end;
+          const float total = std::min({du + (pu - pbf).norm(), window.distance(pbf), window.around(pbf, end)});
+          if (total < best) best = total, best_node = u, best_face = f;
+        }
         for (int k = 0; k < 3; ++k) {
           const int other = graph_.halfedge_edge[3 * f + k];
-          if (other != e) relax_edge(other, u, pu, du);
+          if (other == e) continue;
+          const int first = graph_.first_node(other), count = graph_.end_node(other) - first;
+          const int r0 = visit(first, other);
+          for (int rn = r0; rn < r0 + count; ++rn) {
+            Visit& v = visits_[rn];
+            if (v.closed) continue;
+            int end;
+            const float hop = du + (v.position - pu).norm(), straight = window.distance(v.position),
+                        bend = window.around(v.position, end);
+            const float d = std::min({hop, straight, bend});
+            if (d >= v.dist) continue;
+            v.dist = d;
+            v.parent = u;
+            v.via = f;
+            if (straight <= d) {
+              window.pass_on(mesh_, graph_.edge_halfedge[other], v);
+            } else if (bend <= d) {  // round A or B, which sees the whole of the other edges of f
+              v.source = end == 0 ? window.a : Eigen::Vector3f(window.a + window.length * window.x);
+              v.source_dist = end == 0 ? window.to_a : window.to_b, v.lo = 0, v.hi = edge_length(other);
+            } else {  // from u itself, likewise
+              v.source = pu, v.source_dist = du, v.lo = 0, v.hi = edge_length(other);
+            }
+            queue.push(key(v), rn);
+          }
         }
       }
     }
@@ -328,7 +469,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   }
   visits_.clear();
   // A long refined search can touch most of the graph; its records are not kept beyond 2 MB.
-  if (visits_.capacity() > (size_t{1} << 16)) visits_ = std::vector<Visit>();
+  if (visits_.capacity() * sizeof(Visit) > (size_t{2} << 20)) visits_ = std::vector<Visit>();
   if (best_face < 0) return false;
   remove_loops(strip, face_slot_);
   return true;

@@ -26,11 +26,13 @@ namespace splinekit::surface {
 // one per such length), so a triangle is represented by several nodes and paths are not forced
 // through centroids. Two nodes are linked when they lie on the same face (not on the same edge);
 // the link remembers that face, which gives the strip. The links are implicit (found from the face
-// adjacency); only the edge numbering is stored.
+// adjacency); only the edge numbering is stored. The refined search measures its paths along
+// straight runs across the faces (windows, dual_search.cpp) rather than link by link, so that two
+// nodes per edge find the strip of the shortest path as often as four did on the graph's links.
 struct DualGraph {
   int faces = 0;
   int edges = 0;
-  int steiner = 4;                 // nodes per ordinary edge
+  int steiner = 2;                 // nodes per ordinary edge
   double long_edge = 0;            // edges longer than this get one node per such length
   std::vector<int> halfedge_edge;  // #3F: undirected edge of half-edge (f, k)
   std::vector<int> edge_halfedge;  // #E: one half-edge (3f + k) of each edge
@@ -88,8 +90,25 @@ class DualSearch {
   // remove_loops and the straightening between searches (per-face marks) so the mesh pays for one.
   std::vector<int>& face_marks() { return face_slot_; }
 
+  // A search record: what the search knows of one node it touched (public for the refined search's
+  // window helper in dual_search.cpp).
+  struct Visit {
+    float dist, heuristic;  // from the source; A* term to the target
+    int node, parent;       // parent: a node, -1 at the source
+    Eigen::Vector3f position;
+    bool closed;  // expanded (never again: with the scaled landmark term the A* term is not
+                  // quite consistent, and re-expanding nodes costs more than it gains)
+    // The refined search's window (see Window in dual_search.cpp): the face the node was reached
+    // through, the pseudo-source (laid in that face's plane) and its distance, and the stretch
+    // [lo, hi] of the node's edge (along it from its first end) that the source sees straight.
+    int via;
+    Eigen::Vector3f source;
+    float source_dist, lo, hi;
+  };
+
  private:
   Vec3 node_position(int node, int edge) const;
+  float edge_length(int e) const;
   int link_face(int a, int b) const;  // a face holding both nodes
   // The record of `node` (on edge `edge`, -1 for a face node); -1 when untouched.
   int slot(int node, int edge) const {
@@ -104,13 +123,7 @@ class DualSearch {
   // of an edge get theirs together, so the per-node cost is one int per face and one per edge
   // (face_slot_, edge_slot_: the record of the face node, of the edge's first node; -1 when
   // untouched; face_slot_ is also the loop-removal table of strips, -1 everywhere between uses).
-  struct Visit {
-    float dist, heuristic;  // from the source; A* term to the target
-    int node, parent;       // parent: a node, -1 at the source
-    Eigen::Vector3f position;
-    bool closed;  // expanded (never again: with the scaled landmark term the A* term is not
-                  // quite consistent, and re-expanding nodes costs more than it gains)
-  };
+
   std::vector<int> face_slot_, edge_slot_;
   std::vector<Visit> visits_;
   // The open nodes' records by key (dist + heuristic when pushed); an entry whose key no longer

@@ -4,10 +4,10 @@
 
 namespace splinekit::surface {
 
-// Which graph phase (i) searches. kRefined (face and edge nodes, the queue drained under the A*
-// bound) finds the strip of the globally shortest path far more often; kDual (face nodes only,
-// stopping at the first arrival, as in the paper) is several times cheaper and is what curve
-// tracing uses, where most paths are short and start from nearby points.
+// Which graph phase (i) searches. kRefined (edge nodes, distances along straight runs through
+// windows, the queue drained under the A* bound) finds the strip of the globally shortest path far
+// more often; kDual (face nodes only, stopping at the first arrival, as in the paper) is several times
+// cheaper and is what curve tracing uses, where most paths are short and start from nearby points.
 enum class SearchGraph { kRefined, kDual };
 
 struct ShortestPathOptions {
@@ -19,14 +19,15 @@ struct ShortestPathOptions {
   // ---- Phase (i), the search (dual_search.h) ----
   double long_edge_fraction = 0.01;  // edges longer than this fraction of the bounding-box diagonal
                                      // get one graph node per such length
-  int steiner = 4;                   // graph nodes on every edge
+  int steiner = 2;                   // graph nodes on every edge
   double dual_heuristic_weight = 3;  // weight of the A* Euclidean term in the kDual search
   // Landmark lower bounds (landmarks.h) on meshes of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
   // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
   // dual-graph distances overestimate the refined graph's (by up to a third on the coil of the
   // benchmarks), so no scale is both admissible and useful: 0 (the default) leaves the refined search
-  // exact; 0.85 makes it ~40 times cheaper on that coil but only 90% of nefertiti's paths stay within
+  // admissible (never longer than the graph's shortest path); 0.85 made it ~40 times cheaper on that
+  // coil (2026-12-02, before windows) but only 90% of nefertiti's paths stayed within
   // 0.5% of the exact distance (BENCHMARKS.md, "Surface at scale"). Also tried for the refined
   // search (2026-12-02, on the 384k-triangle coil): landmark distances on a "collapsed" refined graph
   // (one node per edge for its Steiner nodes, links the nearest node pairs: never longer than the
