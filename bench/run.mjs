@@ -4,7 +4,7 @@
 // Ratios compare work done in the same run: wasm vs native for the core kernels.
 //
 // `node bench/run.mjs --only=<section>[,<section>]` runs only the named sections (editor,
-// editor-drag, fidelity, skin-weight-steps, edit, morph, skin3d, surface-scale) and replaces just their text in BENCHMARKS.md (and their entries in
+// editor-drag, fidelity, skin-weight-steps, edit, morph, skin3d, surface, surface-scale) and replaces just their text in BENCHMARKS.md (and their entries in
 // build/bench/results.json), leaving the rest as the last full run wrote it.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -48,6 +48,7 @@ const sections = {
   'skin-weight-steps': { key: 'skin_weight_steps', heading: '### Automatic weights step by step', before: '## Surface', run: () => skinWeightSteps(data), markdown: skinWeightStepsSection },
   morph: { key: 'morph', heading: '## Morph', before: '## Editor (Chromium)', run: () => morphBenchmarks(data), markdown: morphSection },
   skin3d: { key: 'skin3d', heading: '## Skin 3D', before: '## Surface', run: () => skin3dBenchmarks(data), markdown: skin3dSection },
+  surface: { key: 'surface', heading: '## Surface (b/Surf)', before: '## Surface at scale', run: () => surfaceBenchmarks(root, data, { log: console.log }), markdown: surfaceSection },
   'surface-scale': { key: 'surface_scale', heading: '## Surface at scale', before: '## Morph', run: () => surfaceScaleBenchmarks(root, data, { log: console.log }), markdown: surfaceScaleSection },
 };
 

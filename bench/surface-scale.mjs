@@ -210,6 +210,25 @@ Native instructions for random curves (mesh loading subtracted), before → afte
 3.32 G → 3.07 G (0.92×); folded body, 5 curves, 0.63 G → 1.68 G (2.7×; 2.6× the flips, the paths
 are straightened where they were not); nefertiti, 10 curves, 0.117 G → 0.204 G (1.75×).`;
 
+/**
+ * The refined search's changes of 2026-12-03, measured natively on the same 20 pairs per mesh before
+ * and after (build/exp harnesses, thread CPU time, not committed; the figures are the record).
+ */
+const SEARCH_NOTE = `The refined search (wasm/core/surface/dual_search.cpp; 2026-12-03). Its queue is a radix heap on the keys'
+bit patterns (common/radix_queue.h; pop_heap's sift-down over a million entries was ~40% of the time), the face
+centroids are left out of its paths (a centroid joins two nodes of one face, which are linked directly), and it
+measures paths along straight runs through windows (after Mitchell, Mount & Papadimitriou: each node keeps a
+pseudo-source laid flat with the faces crossed and the stretch of its edge the source sees, so a path goes
+straight across faces, round an edge's end vertex, or hops, whichever is shortest) with 2 nodes per edge instead
+of 4 link by link. Before, on the folded body's long thin faces (14 times longer around than along) the links'
+zigzag ran a few percent long and the search took the strip of a neighbouring geodesic: 14 of these 20 pairs
+within 0.5% of exact (worst 1.0564; 8 nodes per edge were needed to find all 20). Native totals over the 20
+pairs, before (binary heap, 4 nodes, links) → after: nefertiti 294 → 92 ms, spot_loop2_369k 1875 → 486 ms,
+noisy spot 2180 → 554 ms, coil 9740 → 2803 ms, folded body 9990 → 2385 ms (nodes expanded 2.1-2.6 times fewer);
+within 0.5% of exact: 20, 20, 20, 19 → 20, 14 → 20 of 20. Tried and dropped: a search from
+both ends (symmetric potentials: 57k nodes on nefertiti's 40 face pairs against 45k from one end; each end with
+its own Euclidean term: 90k).`;
+
 const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
 const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
 
@@ -292,12 +311,7 @@ ${geo.join('\n')}
 
 ${geoNote(m)}
 
-Where ours misses on the folded body (2026-12-02, the 20 pairs above, native): the exact distances are right. A search
-graph with 12 nodes on every edge instead of 4 finds all 20 within 0.5% (worst 1.0010; the worst pair above, 1.0564,
-comes out exact), so the misses are the graph's: on the body's faces, 14 times longer around than along, a path
-crossing them at a shallow angle can only cross their long edges at node positions, and the graph's distance along
-the right corridor runs over the wrong one's (on the worst pair 1.030 by the graph at 4 nodes, 0.939 at 12, against
-0.921 exact). One node per face width on long edges (up to 16) did not help: the hops stay a staircase.
+${SEARCH_NOTE}
 ${m.filter((r) => r.geodesics.exact_error).map((r) => `\n${r.name}: ${r.geodesics.exact_error}; no accuracy there.`).join('')}
 `;
 }
@@ -307,5 +321,5 @@ function geoNote(m) {
   const slow = timed.filter((r) => r.geodesics.ours.total_ms > r.geodesics.flipout.total_ms);
   const exact = timed.filter((r) => r.geodesics.ours.within_pct != null);
   const better = exact.filter((r) => r.geodesics.ours.within_pct >= r.geodesics.flipout.within_pct);
-  return `Ours is slower than flipOut on ${slow.length} of ${timed.length} meshes (the refined search keeps its Euclidean A* term: ShortestPathOptions::refined_landmark_scale and "Why these defaults" in the surface section say why), and at least as often within 0.5% of the exact distance on ${better.length} of ${exact.length} (not on ${exact.filter((r) => !better.includes(r)).map((r) => r.name).join(', ') || 'none'}).`;
+  return `Ours is slower than flipOut on ${slow.length} of ${timed.length} meshes${slow.length ? ` (${slow.map((r) => r.name).join(', ')}: on a thin tube the A* term, Euclidean, knows nothing of the surface, and any search that keeps its paths within 0.5% of exact floods the tube between the ends; the landmark term is not admissible for the refined search, ShortestPathOptions::refined_landmark_scale says why)` : ''}, and at least as often within 0.5% of the exact distance on ${better.length} of ${exact.length} (not on ${exact.filter((r) => !better.includes(r)).map((r) => r.name).join(', ') || 'none'}).`;
 }

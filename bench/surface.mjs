@@ -350,8 +350,8 @@ export function surfaceSection(s) {
   const over = s.meshes.filter((m) => m.geodesics.bytes_per_triangle > 120);
   const overNote = over.length
     ? `over 120: ${over.map((m) => {
-        // Nodes beyond the face nodes and 4 per edge (ShortestPathOptions::steiner) sit on long edges.
-        const extra = m.geodesics.graph_nodes - m.geodesics.triangles - 4 * m.geodesics.graph_edges;
+        // Nodes beyond the face nodes and 2 per edge (ShortestPathOptions::steiner) sit on long edges.
+        const extra = m.geodesics.graph_nodes - m.geodesics.triangles - 2 * m.geodesics.graph_edges;
         return extra > 0
           ? `${name(m.file)} (${extra} extra search-graph nodes, ${f(extra / m.geodesics.triangles, 2)} per triangle, on its edges longer than 1% of the diagonal)`
           : name(m.file);
@@ -424,7 +424,8 @@ bench/native/surface_bench.cpp (g++ -O3, one thread): random source vertices, ea
 target vertices; ${s.meshes[0].geodesics.sources} sources per mesh, ${bigSourceCount(s)} on ${big.join(', ') || 'none'} (one exact solve there: ${bigExact(s)}). Exact distances
 from tests/native/reference/exact_geodesic.h (MMP windows with saddle pseudo-sources) on the same
 repaired mesh. Ratio = path length / exact distance. "Refined" is GeodesicSolver::shortest_path with
-its default search graph (4 Steiner nodes per edge, A* bound drained); "dual" is SearchGraph::kDual,
+its default search graph (2 Steiner nodes per edge, distances along straight runs through windows,
+A* bound drained); "dual" is SearchGraph::kDual,
 the paper's dual graph (face nodes, first arrival), which curve tracing uses. Both are then
 straightened (funnel + flips). "Shorter than exact" counts paths of both graphs shorter than the exact
 distance by more than 1e-9 relative (must be 0).
@@ -439,11 +440,18 @@ Paths shorter than exact: **${shorter}**.
 The defaults of wasm/core/surface/geodesic_options.h, and what they were chosen on (measured when each
 was set; the header says what each option does).
 
-- **steiner = 4, long_edge_fraction = 0.01** (phase (i), the search graph). The paper puts one node
+- **steiner = 2, long_edge_fraction = 0.01** (phase (i), the search graph). The paper puts one node
   per face and extra nodes only on edges longer than 5% of the bounding-box diagonal. On the shared
-  meshes, 4 nodes per edge and 1% take the share of paths within 0.5% of the exact geodesic distance
-  (the table above) from 15-96% to 99-100%; 3 nodes gave 94% on mountain and stanford_bunny, 5 gave
-  100% there at 1.5x the time of 4.
+  meshes, 4 nodes per edge and 1% took the share of paths within 0.5% of the exact geodesic distance
+  from 15-96% to 99-100% when the search measured its paths link by link (3 nodes gave 94% on mountain
+  and stanford_bunny). Since 2026-12-03 it measures them along straight runs through windows
+  (dual_search.cpp), and 2 nodes find the right strip as often as 4 did (10 sources × 50 targets
+  against exact, native: torus 99.4% against 99.0% before, hand_lowres 99.9%, fertility 99.95%, spot
+  100%, mountain 99.8%, stanford_bunny 100%; 20 × 100 on torus: 99.4% with 2, 99.8% with 3), at about
+  0.6 of the time of 3 and 0.4 of 4; 1 node misses on the noisy scan and the folded body (10 and 16
+  of their 20 benchmark pairs within 0.5%). On the folded body of "Surface at scale", whose long thin
+  faces made the link-by-link search pick the strip of a neighbouring geodesic (14 of 20 pairs within
+  0.5%, worst 1.056; 8 nodes per edge were needed), the windows find all 20.
 - **dual_heuristic_weight = 3** (the kDual search that curve tracing uses; weighted A*). On random
   whole-surface curves of nefertiti and spot_loop2_369k, a weight of 2 visits 7-20 times fewer nodes
   than 1 (the search drops from most of the trace time to a tenth of it); the paths are locally
