@@ -1,10 +1,10 @@
 #include "surface/landmarks.h"
 
+#include "common/radix_queue.h"
+
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 
 namespace splinekit::surface {
@@ -13,20 +13,19 @@ void dual_distances(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& cen
                     std::vector<float>& distance) {
   const float inf = std::numeric_limits<float>::infinity();
   distance.assign(mesh.triangles.size(), inf);
-  using Entry = std::pair<float, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  static thread_local RadixQueue queue;  // (Dijkstra: keys never fall below the last popped)
+  queue.clear();
   distance[source] = 0;
-  queue.push({0.f, source});
+  queue.push(0.f, source);
   while (!queue.empty()) {
-    const auto [d, f] = queue.top();
-    queue.pop();
+    const auto [d, f] = queue.pop();
     if (d > distance[f]) continue;  // a stale entry
     for (int g : mesh.adjacency[f]) {
       if (g < 0) continue;
       const float dg = d + (centroids[g] - centroids[f]).norm();
       if (dg < distance[g]) {
         distance[g] = dg;
-        queue.push({dg, g});
+        queue.push(dg, g);
       }
     }
   }
