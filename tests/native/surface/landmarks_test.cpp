@@ -242,12 +242,7 @@ void expect_refined_search_between_exact_and_graph(const TriMesh& mesh, int sour
   GeodesicSolver a(mesh, by_default), c(mesh, scaled);
   ASSERT_EQ(a.landmarks().count(), 8);
   RefinedReference refined(mesh, a.graph());
-  std::vector<double> P;
-  for (const Vec3& x : mesh.positions) P.insert(P.end(), {x.x(), x.y(), x.z()});
-  std::vector<int> T;
-  for (const auto& t : mesh.triangles) T.insert(T.end(), {t[0], t[1], t[2]});
-  reference::ExactGeodesic exact(P.data(), static_cast<int>(mesh.positions.size()), T.data(),
-                                 static_cast<int>(mesh.triangles.size()));
+  reference::ExactGeodesic exact = testing::exact_geodesic(mesh);
   std::mt19937 rng(21);
   std::uniform_int_distribution<int> vertex(0, static_cast<int>(mesh.positions.size()) - 1);
   auto fan = [&](int v) {
@@ -352,12 +347,7 @@ TEST(Landmarks, ShortestPathsStayAsShortAsWithoutLandmarks) {
   without.landmarks = 0;
   GeodesicSolver a(mesh, with), b(mesh, without), c(mesh, by_default);
   ASSERT_EQ(c.landmarks().count(), 8);
-  std::vector<double> P;
-  for (const Vec3& x : mesh.positions) P.insert(P.end(), {x.x(), x.y(), x.z()});
-  std::vector<int> T;
-  for (const auto& t : mesh.triangles) T.insert(T.end(), {t[0], t[1], t[2]});
-  reference::ExactGeodesic exact(P.data(), static_cast<int>(mesh.positions.size()), T.data(),
-                                 static_cast<int>(mesh.triangles.size()));
+  reference::ExactGeodesic exact = testing::exact_geodesic(mesh);
   std::mt19937 rng(11);
   std::uniform_int_distribution<int> vertex(0, static_cast<int>(mesh.positions.size()) - 1);
   PathStats sa, sb;

@@ -183,12 +183,7 @@ TEST(StraightenAtScale, PathsAreLocallyShortestAndNeverShorterThanExact) {
       }
     }
     // Between vertices, against the exact distance: a path is never shorter.
-    std::vector<double> positions;
-    std::vector<int> triangles;
-    for (const Vec3& p : mesh.positions) positions.insert(positions.end(), {p.x(), p.y(), p.z()});
-    for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), {t[0], t[1], t[2]});
-    reference::ExactGeodesic exact(positions.data(), static_cast<int>(mesh.positions.size()), triangles.data(),
-                                   static_cast<int>(mesh.triangles.size()));
+    reference::ExactGeodesic exact = testing::exact_geodesic(mesh);
     std::uniform_int_distribution<int> vertex(0, static_cast<int>(mesh.positions.size()) - 1);
     const int source = vertex(rng);
     const std::vector<double> d = exact.distances(source);

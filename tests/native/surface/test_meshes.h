@@ -2,6 +2,7 @@
 // (a coil, a body with folded limbs), noise, and a reader for the shared OBJ/PLY test data.
 #pragma once
 
+#include "../reference/exact_geodesic.h"
 #include "surface/mesh.h"
 
 #include <Eigen/Dense>
@@ -35,6 +36,17 @@ inline TriMesh build(const Arrays& a) {
   if (build_mesh(a.positions.data(), a.vertices(), a.triangles.data(), a.faces(), mesh, error) != MeshStatus::kOk)
     throw std::runtime_error(error);
   return mesh;
+}
+
+// The exact polyhedral geodesic distances (MMP, tests/native/reference) on a built mesh's own
+// vertices and faces.
+inline reference::ExactGeodesic exact_geodesic(const TriMesh& mesh) {
+  std::vector<double> positions;
+  std::vector<int> triangles;
+  for (const Vec3& p : mesh.positions) positions.insert(positions.end(), {p.x(), p.y(), p.z()});
+  for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), {t[0], t[1], t[2]});
+  return reference::ExactGeodesic(positions.data(), static_cast<int>(mesh.positions.size()), triangles.data(),
+                                  static_cast<int>(mesh.triangles.size()));
 }
 
 // An n x n grid over [0, size]^2 in the plane z = 0 with interior vertices jittered by `jitter`
