@@ -46,7 +46,7 @@ async function meshFile(root, data, spec) {
   return out;
 }
 
-const COUNTERS = ['searchedPaths', 'seededPaths', 'visitedNodes', 'stripFaces', 'passes', 'flips'];
+const COUNTERS = ['searchedPaths', 'seededPaths', 'visitedNodes', 'stripFaces', 'passes', 'flips', 'chords', 'walkedFaces'];
 
 function summary(ms, counters) {
   const out = { curves: ms.length, median_ms: percentile(ms, 0.5), p90_ms: percentile(ms, 0.9), p99_ms: percentile(ms, 0.99), max_ms: Math.max(...ms) };
@@ -229,6 +229,27 @@ within 0.5% of exact: 20, 20, 20, 19 → 20, 14 → 20 of 20. Tried and dropped:
 both ends (symmetric potentials: 57k nodes on nefertiti's 40 face pairs against 45k from one end; each end with
 its own Euclidean term: 90k).`;
 
+/**
+ * Where a random whole-surface curve's time goes, and what was tried against it (2026-12-03; native,
+ * build/exp harnesses with thread CPU timers, not committed; the figures are the record).
+ */
+const CURVES_NOTE = `Where a random whole-surface curve's time goes (2026-12-03, native, the same polygons): the three sides of
+the control polygon, searched and straightened from scratch, take 76% of a coil curve, 77% of a folded body's and
+69% of spot_loop2_369k's; the paths between the subdivision's points after them are mostly seeded and cheap. A
+side's search is cheap (the greedy dual search expands about one node per strip face); its straightening is not:
+the greedy strip lies rows away from the geodesic (on the coil 13 of a 3979-face side's faces are also the final
+path's, 0.09 apart on average, up to 0.24), and flips move it a row at a time. Passes with fewer than 16 reflex
+vertices left (the tail) take 79% of the straightening on spot_loop2_369k, 59% on the folded body, 38% on the coil.
+Measured and dropped: an exact initial strip (the refined search, windows) leaves almost nothing to straighten
+(spot_loop2_369k's 90 sides: 27184 → 8393 flips, the coil's 30: 127887 → 8654) but its search floods (11 → 1560 ms,
+19 → 4173 ms); the dual graph's exact path (weights 1) halves the flips for 10 times the search (spot 101 → 179 ms
+for search and straightening, coil 284 → 392); weights 1.05-1.2 cost spot_loop2_369k's sides 28-40% more and save
+the coil's at most 10%, and around the defaults (Euclidean term 2-5, landmarks 1.5-3) whole curves move by at most
+12%; the greedy search on the refined graph with windows straightens no faster; an exact search in a corridor of 2-8
+rings around the greedy strip saves 5-41% of the flips but costs more than they did; chords across many apices (halving spans, before the passes) halve the semi-star flips but walk 3-16 M faces
+and take 1.25-2.7 times as long. What is left: passes whose cost follows their changes (a pass now lays out and
+scans the whole strip), or flips that move a path several rows at once.`;
+
 const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
 const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
 
@@ -249,8 +270,8 @@ export function surfaceScaleSection(s, { date, machine }) {
     ...m.map((r) => `| ${r.name} | ${f(r.without.random.median_ms)} → ${f(r.with.random_first.median_ms)} ms | ${f(r.without.random.p99_ms, 1)} → ${f(r.with.random_first.p99_ms, 1)} ms | ${f(r.without.disc.median_ms)} → ${f(r.with.disc_first.median_ms)} ms | ${f(r.without.disc.p99_ms)} → ${f(r.with.disc_first.p99_ms)} ms | ${f(r.without.bytes_per_triangle, 1)} → ${f(r.with.bytes_per_triangle, 1)} |`),
   ];
   const work = [
-    '| mesh | curves | searched paths | seeded paths | nodes expanded | strip faces | passes | flips |',
-    '|---|---|---:|---:|---:|---:|---:|---:|',
+    '| mesh | curves | searched paths | seeded paths | nodes expanded | strip faces | passes | flips | chords kept | chord walks (faces) |',
+    '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|',
     ...m.flatMap((r) => [['random, with', r.with.random], ['random, without', r.without.random], ['3% disc, with', r.with.disc]].map(([k, x]) =>
       `| ${r.name} | ${k} | ${COUNTERS.map((c) => `${f(x.median_counters[c], 0)} / ${f(x.p99_counters[c], 0)}`).join(' | ')} |`)),
   ];
@@ -294,11 +315,14 @@ ${before.join('\n')}
 
 Work per curve, median / p99 over the curves (SurfaceMeshHandle counters, summed over a curve's
 shortest paths): paths searched and seeded (straightened through known paths), graph nodes the
-searches expanded, faces of the strips straightened, straightening passes, flips kept:
+searches expanded, faces of the strips straightened, straightening passes, flips kept, chords among them,
+and the faces the chords' walks entered (kept or not):
 
 ${work.join('\n')}
 
 ${STRAIGHTENING_NOTE}
+
+${CURVES_NOTE}
 
 Shortest paths between random vertex pairs (${m[0]?.geodesics.sources} sources × ${m[0]?.geodesics.targets} targets per mesh), ours
 (SurfaceMesh.shortestPath: refined search graph, funnel, flips; wasm, timed inside the module) against

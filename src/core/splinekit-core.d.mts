@@ -113,7 +113,7 @@ export interface Skin3dRigHandle extends EmbindObject {
   errorMessage(): string;
 }
 
-/** What a shortest path or a traced curve cost: phase (i) searches and expanded graph nodes, phase (ii) strip faces, phase (iii) passes, kept flips and frozen vertices. */
+/** What a shortest path or a traced curve cost: phase (i) searches and expanded graph nodes, phase (ii) strip faces, phase (iii) passes, kept flips and frozen vertices, chords traced and kept, faces their walks entered. */
 export interface SurfaceWorkCounters {
   searches: number;
   visitedNodes: number;
@@ -121,6 +121,9 @@ export interface SurfaceWorkCounters {
   passes: number;
   flips: number;
   frozenVertices: number;
+  chordsTried: number;
+  chords: number;
+  walkedFaces: number;
 }
 
 /** wasm/bindings/surface_bindings.cpp — SurfaceMeshHandle (see the flow comment there). */

@@ -30,6 +30,12 @@ export interface TraceCounters {
   flips: number;
   /** Vertices found locally shortest (or not flippable) and frozen. */
   frozenVertices: number;
+  /** Chords traced (walks along the line between two apices of a path) ... */
+  chordsTried: number;
+  /** ... those among the kept flips ... */
+  chords: number;
+  /** ... and the faces the walks entered, kept or not. */
+  walkedFaces: number;
 }
 
 /** A curve traced on the mesh, as mesh points and as 3D positions. */

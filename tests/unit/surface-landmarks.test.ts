@@ -2,7 +2,7 @@
 // through the package: the option, what the mesh reports, the memory they take, and paths on a flat
 // U (points close in space, far apart on the surface) that keep their closed-form lengths.
 import { beforeAll, describe, expect, test } from 'vitest';
-import { DEFAULT_LANDMARKS, SplinekitError, SurfaceMesh, init, type MeshPoint } from '../../src/index.js';
+import { DEFAULT_LANDMARKS, SplinekitError, SurfaceMesh, init, traceBezier, type MeshPoint } from '../../src/index.js';
 
 beforeAll(async () => {
   await init();
@@ -114,6 +114,26 @@ describe('landmarks', () => {
       eager.dispose();
       lazy.dispose();
       called.dispose();
+    }
+  });
+
+  test("a curve's work counters add up: chords among the kept flips, their walks' faces", () => {
+    const mesh = SurfaceMesh.fromArrays(positions, triangles);
+    try {
+      // A control polygon that crosses the slot twice: its sides go round the slot's end.
+      const traced = traceBezier(mesh, [pointAt(cells, 20.5, 60.5), pointAt(cells, 120.5, 50.5), pointAt(cells, 30.5, 20.5), pointAt(cells, 140.5, 40.5)]);
+      const c = traced.counters;
+      expect(c.searchedPaths + c.seededPaths).toBeGreaterThan(20);
+      expect(c.flips).toBeGreaterThan(0);
+      expect(c.chordsTried).toBeGreaterThan(0);
+      expect(c.chords).toBeGreaterThan(0);
+      expect(c.chords).toBeLessThanOrEqual(c.flips);
+      expect(c.chords).toBeLessThanOrEqual(c.chordsTried);
+      // A kept chord walked at least the faces it put into the strip.
+      expect(c.walkedFaces).toBeGreaterThanOrEqual(c.chords);
+      for (const v of Object.values(c)) expect(Number.isInteger(v)).toBe(true);
+    } finally {
+      mesh.dispose();
     }
   });
 

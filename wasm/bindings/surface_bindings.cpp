@@ -278,6 +278,9 @@ class SurfaceMeshHandle {
     out.set("passes", s.passes);
     out.set("flips", s.accepted_flips);
     out.set("frozenVertices", s.frozen_vertices);
+    out.set("chordsTried", s.chords_tried);
+    out.set("chords", s.chords_kept);
+    out.set("walkedFaces", s.walked_faces);
     return out;
   }
 

@@ -53,10 +53,14 @@ struct PathStats {
   int passes = 0;           // phase (iii): straightening passes
   int accepted_flips = 0;   // phase (iii): flips (semi-star, zipper or chord) kept because they shortened the path
   int frozen_vertices = 0;  // phase (iii): vertices found locally shortest (or not flippable) and frozen
+  int chords_tried = 0;     // phase (iii): chords traced (walks along the line between two apices)
+  int chords_kept = 0;      // phase (iii): of the kept flips, chords
+  int walked_faces = 0;     // phase (iii): faces the chords' walks entered (kept or not)
 
   PathStats& operator+=(const PathStats& o) {
     searches += o.searches, visited_nodes += o.visited_nodes, strip_faces += o.strip_faces, passes += o.passes;
     accepted_flips += o.accepted_flips, frozen_vertices += o.frozen_vertices;
+    chords_tried += o.chords_tried, chords_kept += o.chords_kept, walked_faces += o.walked_faces;
     return *this;
   }
 };

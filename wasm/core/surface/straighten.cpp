@@ -185,7 +185,9 @@ bool Straightener::pass(PathStats* stats) {
         (apices_[j + 1].vertex < 0 ||
          run_of(apices_[j + 1].vertex, apices_[j + 1].portal, room.q_first, room.q_last)) &&
         !overlaps(room.p_first, room.q_last);
-    if (!fits || no_chord_.contains(made.vertex) || !chord(j, room, made)) zipper(j, made);
+    const bool try_chord = fits && !no_chord_.contains(made.vertex);
+    if (try_chord && stats) ++stats->chords_tried;
+    if (!try_chord || !chord(j, room, made)) zipper(j, made);
     if (!overlaps(made.first, made.last)) {
       std::fill(taken_.begin() + made.first, taken_.begin() + made.last + 1, 1);
       ++used_;
@@ -193,6 +195,8 @@ bool Straightener::pass(PathStats* stats) {
   }
   for (size_t i = 0; i < used_; ++i)
     std::fill(taken_.begin() + flips_[i].first, taken_.begin() + flips_[i].last + 1, 0);
+  if (stats) stats->walked_faces += walked_;
+  walked_ = 0;
   if (used_ == 0) return true;  // all frozen this pass; the next pass finds nothing new
   chosen_.clear();
   for (size_t i = 0; i < used_; ++i) chosen_.push_back(&flips_[i]);
@@ -221,7 +225,10 @@ bool Straightener::pass(PathStats* stats) {
     apices_.swap(trial_apices_);
     made_.swap(trial_made_);
     length_ = trial_length;
-    if (stats) stats->accepted_flips += static_cast<int>(chosen_.size());
+    if (stats) {
+      stats->accepted_flips += static_cast<int>(chosen_.size());
+      for (const Flip* f : chosen_) stats->chords_kept += f->chord;
+    }
   } else {
     for (const Flip* f : chosen_) {
       if (f->chord) {
@@ -382,6 +389,7 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
     const int g = mesh_.adjacency[f][e];
     if (g < 0) return false;
     on_strip = follow_strip(on_strip, g);
+    ++walked_;
     if (on_strip >= 0) {
       cf = unfolded_.corners[on_strip];
     } else {

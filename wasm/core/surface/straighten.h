@@ -209,6 +209,7 @@ class Straightener {
   std::vector<int> walk_faces_;
   std::vector<std::array<Vec2, 3>> walk_laid_;
   std::vector<int8_t> walk_exits_;
+  int walked_ = 0;  // faces the chords' walks entered since the last pass's count
 };
 
 }  // namespace splinekit::surface
