@@ -12,6 +12,11 @@
 //   surface_scale_bench search <mesh> <pairs> <seed>
 //       phase (i) alone, with and without landmarks, on random face pairs: nodes expanded and time
 //       per search for the kDual and kRefined graphs, and the landmark precompute.
+//   surface_scale_bench steiner <mesh> <sources> <targets> <seed>
+//       shortest paths between random vertices (sources x targets) with 1 to 4 search-graph nodes per
+//       edge (ShortestPathOptions::steiner) against the exact distance (MMP): the share within 0.5%,
+//       the worst ratio and the total time per count, as {"steiner":[...]} (BENCHMARKS.md, "Why
+//       these defaults", was measured with it at 10 x 50).
 //   surface_scale_bench curves <mesh> <polygons> <seed> [lengths]
 //       random whole-surface curves (4 control points uniform over the area), OLR 5 levels, as the
 //       wasm benchmark traces them: per-curve ms (median, p90, p99, max; this thread's CPU time, so
@@ -142,6 +147,46 @@ static int search(const std::string& file, int pairs, unsigned seed) {
   return 0;
 }
 
+static int steiner(const std::string& file, int sources, int targets, unsigned seed) {
+  const TriMesh mesh = testing::build(testing::read_mesh(file));
+  splinekit::reference::ExactGeodesic exact = testing::exact_geodesic(mesh);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> vertex(0, static_cast<int>(mesh.positions.size()) - 1);
+  struct Pair {
+    int a, b;
+    double exact;
+  };
+  std::vector<Pair> pairs;
+  for (int s = 0; s < sources; ++s) {
+    const int a = vertex(rng);
+    const std::vector<double> d = exact.distances(a);
+    for (int t = 0; t < targets; ++t) {
+      const int b = vertex(rng);
+      if (b != a && d[b] > 0 && std::isfinite(d[b])) pairs.push_back({a, b, d[b]});
+    }
+  }
+  std::printf("{\"triangles\":%zu,\"pairs\":%zu,\"steiner\":[", mesh.triangles.size(), pairs.size());
+  for (int count = 1; count <= 4; ++count) {
+    ShortestPathOptions options;
+    options.steiner = count;
+    GeodesicSolver solver(mesh, options);
+    int within = 0, shorter = 0;
+    double worst = 1, ms = 0;
+    GeodesicPath path;
+    for (const Pair& p : pairs) {
+      const double t0 = thread_ms();
+      solver.shortest_path(vertex_point(mesh, p.a), vertex_point(mesh, p.b), path);
+      ms += thread_ms() - t0;
+      const double ratio = path_length(mesh, path) / p.exact;
+      within += ratio <= 1.005, shorter += ratio < 1 - 1e-9, worst = std::max(worst, ratio);
+    }
+    std::printf("%s{\"steiner\":%d,\"within_pct\":%.2f,\"shorter\":%d,\"worst_ratio\":%.5f,\"total_ms\":%.1f}",
+                count > 1 ? "," : "", count, 100.0 * within / std::max<size_t>(1, pairs.size()), shorter, worst, ms);
+  }
+  std::printf("]}\n");
+  return 0;
+}
+
 static int curves(const std::string& file, int polygons, unsigned seed, bool lengths) {
   const TriMesh mesh = testing::build(testing::read_mesh(file));
   const int nf = static_cast<int>(mesh.triangles.size());
@@ -211,6 +256,8 @@ int main(int argc, char** argv) {
     if (mode == "shape" && argc >= 4) return shape(argc, argv);
     if (mode == "exact" && argc >= 3) return exact(argv[2]);
     if (mode == "search" && argc >= 5) return search(argv[2], std::atoi(argv[3]), std::atoi(argv[4]));
+    if (mode == "steiner" && argc >= 6)
+      return steiner(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5]));
     if (mode == "curves" && argc >= 5)
       return curves(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 && std::string(argv[5]) == "lengths");
   } catch (const std::exception& e) {
@@ -221,6 +268,7 @@ int main(int argc, char** argv) {
                "usage: surface_scale_bench shape coil|folded|noisy <out.obj> [<in mesh>]\n"
                "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
                "       surface_scale_bench search <mesh> <pairs> <seed>\n"
+               "       surface_scale_bench steiner <mesh> <sources> <targets> <seed>\n"
                "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths]\n");
   return 2;
 }
