@@ -343,10 +343,12 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   const Eigen::Vector3f paf = pa.cast<float>();
   for (int s : sources)
     for_face_nodes(s, -1, [&](int node, int e) {
-      relax(node, e, -1, paf, 0.f);
-      if (e < 0) return;
-      Visit& v = visits_[visit(node, e)];
-      if (v.parent == -1 && v.via < 0) v.via = s, v.source = paf, v.source_dist = 0, v.lo = 0, v.hi = edge_length(e);
+      const int r = visit(node, e);
+      relax_record(r, -1, paf, 0.f);
+      // An edge node's window from the source point, which sees all of the node's edge (the first
+      // source face to reach the node gives it).
+      Visit& v = visits_[r];
+      if (e >= 0 && v.via < 0) v.via = s, v.source = paf, v.source_dist = 0, v.lo = 0, v.hi = edge_length(e);
     });
 
   int visited = 0;
@@ -367,19 +369,11 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
       const float total = du + static_cast<float>(weight) * (pu - pbf).norm();
       if (total < best) best = total, best_node = u, best_face = f;
     };
-    auto expand_face = [&](int f, int skip_edge) {
-      arrive(f);
-      for_face_nodes(f, skip_edge, [&](int node, int e) {
-        if (node != u) relax(node, e, u, pu, du);
-      });
-    };
     if (dual) {
       arrive(u);
       for (int g : mesh_.adjacency[u])
         if (g >= 0) relax(g, -1, u, pu, du);
-    } else if (u < nf) {
-      expand_face(u, -1);
-    } else {
+    } else {  // (an edge node: the refined search has no centroid nodes)
       int faces[2];
       node_faces(mesh_, graph_, u, faces);
       const int e = graph_.edge_of_node(u);
