@@ -289,8 +289,8 @@ void expect_refined_search_between_exact_and_graph(const TriMesh& mesh, int sour
 
 // On a plane every shortest path is the straight segment. The refined search's windows follow it
 // through the faces where one window sees far enough, and bend at a vertex or a node elsewhere (one
-// window per node, where the exact method keeps all of an edge's): its paths come out within a few
-// tenths of a percent of the straight distance on average, and never shorter, where the graph's
+// window per node, where the exact method keeps all of an edge's): its paths come out within a
+// tenth of a percent of the straight distance on average, and never shorter, where the graph's
 // links, bending at nodes a third of an edge apart, run several percent longer.
 TEST(Landmarks, TheRefinedSearchGoesNearlyStraightAcrossAPlane) {
   const TriMesh mesh = testing::build(testing::planar_grid(40, 1, 0.25));
@@ -318,8 +318,9 @@ TEST(Landmarks, TheRefinedSearchGoesNearlyStraightAcrossAPlane) {
     graph_ratio += graph / direct;
   }
   ASSERT_GT(pairs, 30);
-  // (measured: about 1.003 against the graph's 1.04)
-  EXPECT_LT(found_ratio / pairs, 1.005);
+  // (measured: 1.0008 against the graph's 1.038; 1.003 while the stretch a window passes on was
+  // solved on the wrong side of the pseudo-source, which cut straight runs short)
+  EXPECT_LT(found_ratio / pairs, 1.002);
   EXPECT_GT(graph_ratio / pairs, 1.02);
 }
 

@@ -213,25 +213,34 @@ struct Window {
                           q1 = mesh.positions[t[(h % 3 + 1) % 3]].cast<float>() - a;
     const float x0 = q0.dot(x), y0 = std::max(0.f, q0.dot(y)), x1 = q1.dot(x), y1 = std::max(0.f, q1.dot(y));
     const float length = (q1 - q0).norm();
-    // Along the edge, s in [0, length]: crossing(s) is monotone; the stretch is where it lies in
-    // [lo, hi]. Solve crossing(s) = c for c = lo, hi: (x(s) - xs)(-ys) = (c - xs)(y(s) - ys).
-    auto at = [&](float c) {
-      const float dx = x1 - x0, dy = y1 - y0;
-      const float num = (c - xs) * (y0 - ys) + (x0 - xs) * ys, den = -ys * dx - (c - xs) * dy;
-      return den != 0 ? length * (num / den) : std::numeric_limits<float>::quiet_NaN();
-    };
     if (!(ys < 0)) {  // σ on e: it sees all of f
       v.lo = 0, v.hi = length;
       return;
     }
-    float s0 = at(lo), s1 = at(hi);
-    if (std::isnan(s0) || std::isnan(s1)) {
-      v.lo = 0, v.hi = length;
-      return;
+    // Along the edge, s in [0, length], the segment from σ to the edge's point crosses e's line at
+    // crossing(s), which runs monotonically from c0 (s = 0) to c1 (s = length): the stretch is
+    // where it lies in [lo, hi]. Where lo or hi lies strictly between c0 and c1, solve
+    // crossing(s) = c: (x(s) - xs)(-ys) = (c - xs)(y(s) - ys), linear in s. (The line's solution
+    // outside the edge can lie behind σ, where crossing() is not that of a segment from σ: only the
+    // edge's own stretch is solved for.)
+    const float c0 = crossing(x0, y0), c1 = crossing(x1, y1);
+    auto at = [&](float c) {
+      const float dx = x1 - x0, dy = y1 - y0;
+      const float num = (c - xs) * (y0 - ys) + (x0 - xs) * ys, den = -ys * dx - (c - xs) * dy;
+      const float s = den != 0 ? length * (num / den) : length * (c - c0) / (c1 - c0);
+      return std::clamp(s, 0.f, length);
+    };
+    float from, to;
+    if (c0 <= c1) {
+      from = c0 >= lo ? 0 : lo <= c1 ? at(lo) : length;
+      to = c1 <= hi ? length : hi >= c0 ? at(hi) : 0;
+    } else {
+      from = c0 <= hi ? 0 : hi >= c1 ? at(hi) : length;
+      to = c1 >= lo ? length : lo <= c0 ? at(lo) : 0;
     }
-    if (s0 > s1) std::swap(s0, s1);
-    // The node itself is seen: the stretch holds it (up to rounding).
-    v.lo = std::clamp(s0, 0.f, length), v.hi = std::clamp(s1, 0.f, length);
+    // (A node seen within the visibility test's slack, where the stretch is empty: a point.)
+    if (from > to) from = to = (from + to) / 2;
+    v.lo = from, v.hi = to;
   }
 };
 
