@@ -445,14 +445,17 @@ was set; the header says what each option does).
   meshes, 4 nodes per edge and 1% took the share of paths within 0.5% of the exact geodesic distance
   from 15-96% to 99-100% when the search measured its paths link by link (3 nodes gave 94% on mountain
   and stanford_bunny). Since 2026-12-03 it measures them along straight runs through windows
-  (dual_search.cpp), and 2 nodes find the right strip as often as 4 did (\`surface_scale_bench steiner
-  <mesh> 10 50 7\`, 10 sources × 50 targets against exact, native: spot_control_tri 99.6% with any count,
-  hand_lowres 100%, torus 99.2% (99.0% with 4 nodes on the links), fertility 100%, spot 100%, mountain
-  99.8%, stanford_bunny 100%; 3 nodes 99.6-100%, 4 nodes 99.6-100%), at 0.5-0.6 of the time of 3 and
-  0.4 of 4 on the larger meshes; 1 node gives 98.6% on mountain, and misses on the noisy scan and the
-  folded body (10 and 16 of their 20 benchmark pairs within 0.5%). On the folded body of "Surface at
-  scale", whose long thin faces made the link-by-link search pick the strip of a neighbouring geodesic
-  (14 of 20 pairs within 0.5%, worst 1.056; 8 nodes per edge were needed), the windows find all 20.
+  (dual_search.cpp), and 2 nodes find the right strip at least as often as 4 did (\`surface_scale_bench
+  steiner <mesh> 10 50 7\`, 10 sources × 50 targets against exact, native: spot_control_tri 99.6% with
+  any count, hand_lowres, torus, fertility, spot, mountain and stanford_bunny 100%; torus was 99.0% with 4
+  nodes on the links), at 0.5-0.6 of the time of 3 and 0.4 of 4 on the larger meshes. On shapes not
+  tuned on (\`surface_scale_bench shape noisy-cube|small-noisy-coil|small-noisy-folded\`), 2 nodes give
+  a noisy cube (±0.4 edge lengths) 99.2% (3 nodes 99.4%, 4 nodes 100%), a noisy coil 99.8%, and a
+  coarse noisy folded body (28k triangles, 24 around) 98.2% (3 nodes 99.8%, 4 nodes 100%; the links
+  with 4 nodes gave 55%); 1 node gives 99.0% on mountain and 80.6% on that folded body. On the folded
+  body of "Surface at scale", whose long thin faces made the link-by-link search pick the strip of a
+  neighbouring geodesic (14 of 20 pairs within 0.5%, worst 1.056; 8 nodes per edge were needed), the
+  windows find all 20.
 - **dual_heuristic_weight = 3** (the kDual search that curve tracing uses; weighted A*). On random
   whole-surface curves of nefertiti and spot_loop2_369k, a weight of 2 visits 7-20 times fewer nodes
   than 1 (the search drops from most of the trace time to a tenth of it); the paths are locally

@@ -1,6 +1,7 @@
 // Native side of the "surface at scale" benchmark (bench/surface-scale.mjs runs it):
 //
-//   surface_scale_bench shape coil|folded|noisy <out.obj> [<in mesh> for noisy]
+//   surface_scale_bench shape coil|folded|noisy|noisy-cube|small-noisy-coil|small-noisy-folded <out.obj>
+//                             [<in mesh> for noisy]
 //       writes a generated mesh (tests/native/surface/test_meshes.h: the same shapes the tests use,
 //       at benchmark size): the coil (8 turns, tube radius 0.12, pitch 0.3, 4000 x 48 quads,
 //       384k triangles), a body with two limbs folded against it (3000 x 64 quads, 384k triangles),
@@ -72,6 +73,11 @@ static int shape(int argc, char** argv) {
   if (kind == "coil") return write_obj(testing::coil(4000, 48), out);
   if (kind == "folded") return write_obj(testing::folded_body(3000, 64), out);
   if (kind == "noisy" && argc > 4) return write_obj(testing::noisy(testing::read_mesh(argv[4]), 0.3, 3), out);
+  // Small noisy shapes for accuracy checks against the exact distance (`steiner`), which is too slow
+  // on the benchmark's 384k-triangle ones.
+  if (kind == "noisy-cube") return write_obj(testing::noisy(testing::cube(24), 0.4, 5), out);
+  if (kind == "small-noisy-coil") return write_obj(testing::noisy(testing::coil(800, 16), 0.3, 5), out);
+  if (kind == "small-noisy-folded") return write_obj(testing::noisy(testing::folded_body(600, 24), 0.3, 5), out);
   std::fprintf(stderr, "surface_scale_bench: unknown shape %s\n", kind.c_str());
   return 2;
 }
@@ -265,7 +271,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fprintf(stderr,
-               "usage: surface_scale_bench shape coil|folded|noisy <out.obj> [<in mesh>]\n"
+               "usage: surface_scale_bench shape coil|folded|noisy|noisy-cube|small-noisy-coil|small-noisy-folded "
+               "<out.obj> [<in mesh>]\n"
                "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
                "       surface_scale_bench search <mesh> <pairs> <seed>\n"
                "       surface_scale_bench steiner <mesh> <sources> <targets> <seed>\n"
