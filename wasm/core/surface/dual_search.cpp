@@ -142,12 +142,13 @@ namespace {
 // d(σ) + |σ - x| by a straight segment on the unfolded faces. Going on into the next face f, a node
 // p of f that σ sees through the stretch gets d(σ) + |σ - p| (a real path on the surface, no longer
 // than the graph's hops through the node), and its own stretch is where the cone from σ through
-// [lo, hi] meets p's edge; a node that σ does not see gets the hop from the node, with the node as
-// its pseudo-source. The window of Mitchell, Mount & Papadimitriou ("The discrete geodesic
-// problem", SIAM J. Comput. 16(4), 1987), one per node: distances follow the surface's straight
-// lines rather than the graph's zigzag across nodes spaced a fifth of an edge apart, which on thin
-// tubes and long faces (a limb, a coil) is what made the search pick a path a few percent longer
-// than a neighbouring one.
+// [lo, hi] meets p's edge; a node that σ does not see gets the shorter of the way round an end of
+// the node's edge that the stretch reaches (with that vertex as its pseudo-source) and the hop
+// from the node (with the node as its pseudo-source). The window of Mitchell, Mount &
+// Papadimitriou ("The discrete geodesic problem", SIAM J. Comput. 16(4), 1987), one per node:
+// distances follow the surface's straight lines rather than the graph's zigzag between the nodes
+// on the edges, which on thin tubes and long faces (a limb, a coil) is what made the search pick a
+// path a few percent longer than a neighbouring one.
 //
 // In f's plane, with the edge e from A to B along unit x and unit y across it into f, σ lies at
 // (xs, ys) with ys <= 0 (behind e, or on it).
