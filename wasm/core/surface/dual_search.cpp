@@ -402,6 +402,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
           if (other == e) continue;
           const int first = graph_.first_node(other), count = graph_.end_node(other) - first;
           const int r0 = visit(first, other);
+          const float other_length = edge_length(other);  // (the stretch a vertex or u sees: all of it)
           for (int rn = r0; rn < r0 + count; ++rn) {
             Visit& v = visits_[rn];
             if (v.closed) continue;
@@ -417,9 +418,9 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
               window.pass_on(mesh_, graph_.edge_halfedge[other], v);
             } else if (bend <= d) {  // round A or B, which sees the whole of the other edges of f
               v.source = end == 0 ? window.a : Eigen::Vector3f(window.a + window.length * window.x);
-              v.source_dist = end == 0 ? window.to_a : window.to_b, v.lo = 0, v.hi = edge_length(other);
+              v.source_dist = end == 0 ? window.to_a : window.to_b, v.lo = 0, v.hi = other_length;
             } else {  // from u itself, likewise
-              v.source = pu, v.source_dist = du, v.lo = 0, v.hi = edge_length(other);
+              v.source = pu, v.source_dist = du, v.lo = 0, v.hi = other_length;
             }
             queue.push(key(v), rn);
           }
