@@ -17,8 +17,7 @@ struct ShortestPathOptions {
   double chord_min_turn = 0.01;  // radians: a chord only where the path turns by more (else a semi-star)
   int max_passes = 100000;       // safety bound on phase (iii)'s passes (each flips several vertices)
   // Shots at the end-to-end chord before the passes (aim.h), for kDual strips only (the kRefined
-  // search's strips lie on the geodesic already); 0: none. Measured: BENCHMARKS.md, "Surface at
-  // scale", the note on where a curve's time goes.
+  // search's strips lie on the geodesic already); 0: none.
   int aim_shots = 8;
   int aim_min_faces = 256;  // ... on strips of at least this many faces (shorter ones straighten quickly)
   // ---- Phase (i), the search (dual_search.h) ----
