@@ -3,7 +3,6 @@
 // on a bump, where the strip's layout mis-aims it, lines re-aimed until they reach the end, whose
 // paths are within 0.5% of the exact distance; where the line meets a hole, nothing changes.
 #include "surface/aim.h"
-#include "strip_checks.h"
 #include "surface/geodesic.h"
 #include "test_meshes.h"
 
@@ -18,8 +17,16 @@ namespace {
 
 using testing::Arrays;
 
-using testing::centroid;
-using testing::expect_strip;
+MeshPoint centroid(int face) { return {face, Vec2(1.0 / 3, 1.0 / 3)}; }
+
+// Consecutive faces share an edge and no face comes twice.
+void expect_strip(const TriMesh& mesh, const std::vector<int>& strip) {
+  for (size_t i = 0; i + 1 < strip.size(); ++i)
+    EXPECT_GE(edge_to(mesh, strip[i], strip[i + 1]), 0) << "faces " << i << ", " << i + 1;
+  std::vector<int> sorted = strip;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a face twice";
+}
 
 // The dual graph's strip from a to b, laid out and its funnel path found, in `s`.
 void begin_on_dual_strip(GeodesicSolver& solver, Straightener& s, const MeshPoint& a, const MeshPoint& b) {

@@ -3,7 +3,6 @@
 // in exactly the vertices that still block, a chord's faces are those the straight line crosses,
 // apply lays the new strip as a fresh layout would, and a pass is what the whole loop repeats.
 #include "surface/straighten.h"
-#include "strip_checks.h"
 #include "surface/geodesic.h"
 #include "test_meshes.h"
 
@@ -25,8 +24,16 @@ int vertex_near(const TriMesh& mesh, const Vec3& p) {
   return -1;
 }
 
-using testing::centroid;
-using testing::expect_strip;
+MeshPoint centroid(int face) { return {face, Vec2(1.0 / 3, 1.0 / 3)}; }
+
+// Consecutive faces share an edge and no face comes twice.
+void expect_strip(const TriMesh& mesh, const std::vector<int>& strip) {
+  for (size_t i = 0; i + 1 < strip.size(); ++i)
+    EXPECT_GE(edge_to(mesh, strip[i], strip[i + 1]), 0) << "faces " << i << ", " << i + 1;
+  std::vector<int> sorted = strip;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a face twice";
+}
 
 // A layout `u` of `strip` that matches a fresh unfolding of it (the first face is laid alike).
 void expect_fresh_layout(const TriMesh& mesh, const std::vector<int>& strip, const UnfoldedStrip& u) {
