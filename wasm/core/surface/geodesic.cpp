@@ -25,7 +25,7 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     path = GeodesicPath{a, b, {}, {}, {}};
     return false;
   }
-  straightener_.straighten(a, b, strip_, path, stats, graph == SearchGraph::kDual);
+  straightener_.straighten(a, b, strip_, path, stats);
   return true;
 }
 

@@ -16,10 +16,6 @@ struct ShortestPathOptions {
   bool chords = true;            // flips along the line between apices (else semi-stars and zippers only)
   double chord_min_turn = 0.01;  // radians: a chord only where the path turns by more (else a semi-star)
   int max_passes = 100000;       // safety bound on phase (iii)'s passes (each flips several vertices)
-  // Shots at the end-to-end chord before the passes (aim.h), for kDual strips only (the kRefined
-  // search's strips lie on the geodesic already); 0: none.
-  int aim_shots = 8;
-  int aim_min_faces = 256;  // ... on strips of at least this many faces (shorter ones straighten quickly)
   // ---- Phase (i), the search (dual_search.h) ----
   double long_edge_fraction = 0.01;  // edges longer than this fraction of the bounding-box diagonal
                                      // get one graph node per such length
@@ -60,14 +56,11 @@ struct PathStats {
   int chords_tried = 0;     // phase (iii): chords traced (walks along the line between two apices)
   int chords_kept = 0;      // phase (iii): of the kept flips, chords
   int walked_faces = 0;     // phase (iii): faces the chords' walks entered (kept or not)
-  int shots = 0;            // phase (iii): lines aimed from end to end (aim.h)
-  int aimed = 0;            // phase (iii): paths whose strip an aimed line's faces replaced
 
   PathStats& operator+=(const PathStats& o) {
     searches += o.searches, visited_nodes += o.visited_nodes, strip_faces += o.strip_faces, passes += o.passes;
     accepted_flips += o.accepted_flips, frozen_vertices += o.frozen_vertices;
     chords_tried += o.chords_tried, chords_kept += o.chords_kept, walked_faces += o.walked_faces;
-    shots += o.shots, aimed += o.aimed;
     return *this;
   }
 };

@@ -1,7 +1,5 @@
 #include "surface/straighten.h"
 
-#include "surface/aim.h"
-
 #include <algorithm>
 #include <limits>
 
@@ -25,7 +23,7 @@ Straightener::Straightener(const TriMesh& mesh, std::vector<int>& face_marks, co
 // =================================================================================================
 
 void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
-                              PathStats* stats, bool aimed) {
+                              PathStats* stats) {
   path.strip = strip;
   point_in_face(mesh_, a, strip.front(), path.start);
   point_in_face(mesh_, b, strip.back(), path.end);
@@ -34,7 +32,6 @@ void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vecto
   if (stats) stats->strip_faces += static_cast<int>(strip.size());
   if (strip.size() == 1) return;
   begin(path.start, path.end, strip);
-  if (aimed && options.straighten && strip_.size() >= static_cast<size_t>(options.aim_min_faces)) take_aim(stats);
   for (int passes = 0; options.straighten && passes < options.max_passes; ++passes) {
     if (stats) ++stats->passes;
     if (!pass(stats)) break;
@@ -51,28 +48,6 @@ void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std
   frozen_.clear(), frozen_cos_.clear(), no_chain_.clear(), no_chord_.clear();
   unfold_strip(mesh_, strip_, unfolded_);
   length_ = shorten(unfolded_, made_, apices_, nullptr);
-}
-
-bool Straightener::take_aim(PathStats* stats) {
-  int fired = 0;
-  const bool reached = aim(mesh_, unfolded_, start_, end_, options.aim_shots, trial_, fired);
-  if (stats) stats->shots += fired;
-  if (!reached) return false;
-  constexpr int kSeen = -2;
-  bool twice = false;
-  for (int face : trial_) twice |= face_marks_[face] == kSeen, face_marks_[face] = kSeen;
-  for (int face : trial_) face_marks_[face] = -1;
-  if (twice) return false;
-  unfold_strip(mesh_, trial_, trial_unfolded_, &unfolded_);
-  const double trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, nullptr);
-  if (!(trial_length < length_ - 1e-12 * mesh_.scale)) return false;
-  strip_.swap(trial_);
-  std::swap(unfolded_, trial_unfolded_);
-  apices_.swap(trial_apices_);
-  made_.swap(trial_made_);
-  length_ = trial_length;
-  if (stats) ++stats->aimed;
-  return true;
 }
 
 double Straightener::shorten(const UnfoldedStrip& u, std::vector<Apex>& raw, std::vector<Apex>& out,

@@ -101,9 +101,8 @@ class Straightener {
   // ---- The whole straightening ----
   // Phases (ii)+(iii) on `strip` (consecutive faces adjacent; a on strip.front(), b on strip.back()):
   // `path` is the straightened path, `strip` its strip. Adds its flips and frozen vertices to stats.
-  // With `aimed`, the end-to-end chord (`take_aim`) is tried before the passes.
   void straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
-                  PathStats* stats = nullptr, bool aimed = false);
+                  PathStats* stats = nullptr);
 
   // ---- Queries: the strip being straightened ----
   const std::vector<int>& strip() const { return strip_; }
@@ -123,11 +122,6 @@ class Straightener {
   // Phase (ii): takes `strip` with the end points `start` on its first face and `end` on its last,
   // lays it out and finds its funnel path; forgets the frozen vertices of the last path.
   void begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip);
-  // Before the passes: the strip replaced by the faces of the straight line from the start point to
-  // the end point's face, aimed by shooting (aim.h, up to options.aim_shots shots), if its funnel
-  // path is shorter. False (the strip as it was) when no shot reached the end point's face, the line
-  // crosses a face twice (round a thin tube: the flips settle it), or its path is no shorter.
-  bool take_aim(PathStats* stats = nullptr);
   // One pass of phase (iii): every reflex vertex not frozen, largest turn first, gets a flip (a
   // chord, a zipper or a semi-star) unless its faces touch an earlier one's; the flips are kept
   // together if they shorten the path, else the largest turn's alone if it does (the others'
