@@ -248,7 +248,19 @@ the coil's at most 10%, and around the defaults (Euclidean term 2-5, landmarks 1
 12%; the greedy search on the refined graph with windows straightens no faster; an exact search in a corridor of 2-8
 rings around the greedy strip saves 5-41% of the flips but costs more than they did; chords across many apices (halving spans, before the passes) halve the semi-star flips but walk 3-16 M faces
 and take 1.25-2.7 times as long. What is left: passes whose cost follows their changes (a pass now lays out and
-scans the whole strip), or flips that move a path several rows at once.`;
+scans the whole strip), or flips that move a path several rows at once.
+
+Measured and dropped later on 2026-12-03 (commit 8e48313, reverted): the end-to-end chord, aimed. Before the
+flips, a dual strip of 256 faces or more was replaced by the faces a straight line from the start point crosses to
+the end point's face, re-aimed by the secant method on its angle (up to 8 shots, given up when the miss had not halved
+in two), where its funnel path was shorter. Where a shot lands the flips almost vanish (a 3548-face folded-body side:
+2395 → 38), and on spot_loop2_369k's sides (native, 60 pairs) it saved 30% (68 → 48 ms). But in one wasm module
+against the tree before it (bench:ab, 100 curves, best of 2), per-curve medians went spot_loop2_369k -10.6%, folded
+body -0.9%, noisy spot +12.7%, coil +3.8%, nefertiti +2.9%. On a noisy surface the miss jumps with every vertex the
+line passes (943 shots, one path aimed); on the coil a long side winds round the tube, a shot that passes the end
+point does so a turn of the coil away, where the face's plane says nothing about where the end point is, and the
+shots that land find longer geodesics (wound once more) that the path keeps out. An aimed path can also be another
+locally shortest path than the flips' (of 60 folded-body sides, one came out 2.6% longer).`;
 
 const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
 const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
