@@ -32,7 +32,8 @@ int DualGraph::edge_of_node(int node) const {
   if (long_edges.empty()) return local / steiner;
   // The last long edge whose nodes start at or before `local` (long edge i starts at
   // long_edges[i]·steiner + long_extra[i]), then the ordinary edges after it.
-  int lo = 0, hi = static_cast<int>(long_edges.size());
+  const int b = local >> kBlockBits;
+  int lo = node_block[b], hi = node_block[b + 1];
   while (lo < hi) {
     const int mid = (lo + hi) / 2;
     if (long_edges[mid] * steiner + long_extra[mid] <= local)
@@ -44,6 +45,26 @@ int DualGraph::edge_of_node(int node) const {
   const int i = lo - 1, first = long_edges[i] * steiner + long_extra[i];
   const int end = first + steiner + long_extra[i + 1] - long_extra[i];
   return local < end ? long_edges[i] : long_edges[i] + 1 + (local - end) / steiner;
+}
+
+void DualGraph::index_long_edges() {
+  edge_block.clear(), node_block.clear();
+  if (long_edges.empty()) return;
+  const int count = static_cast<int>(long_edges.size());
+  // Long edges before edge b·2^k; long edges starting at or before local node b·2^k (the last
+  // entry of each: all of them, for the look-ups of the last run).
+  for (int b = 0, i = 0; (b << kBlockBits) < edges; ++b) {
+    while (i < count && long_edges[i] < (b << kBlockBits)) ++i;
+    edge_block.push_back(i);
+  }
+  edge_block.push_back(count);
+  const int local_nodes = nodes() - faces;
+  for (int b = 0, i = 0; (b << kBlockBits) < local_nodes; ++b) {
+    while (i < count && long_edges[i] * steiner + long_extra[i] <= (b << kBlockBits)) ++i;
+    node_block.push_back(i);
+  }
+  node_block.push_back(count);
+  edge_block.shrink_to_fit(), node_block.shrink_to_fit();
 }
 
 DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
@@ -78,6 +99,7 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
   graph_.edges = static_cast<int>(graph_.edge_halfedge.size());
   graph_.long_edges.shrink_to_fit();
   graph_.long_extra.shrink_to_fit();
+  graph_.index_long_edges();
   face_slot_.assign(nf, -1);
   edge_slot_.assign(graph_.edges, -1);
   centroids_.resize(nf);
@@ -90,7 +112,7 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
 
 size_t DualSearch::bytes() const {
   return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.long_edges.capacity() +
-          graph_.long_extra.capacity()) *
+          graph_.long_extra.capacity() + graph_.edge_block.capacity() + graph_.node_block.capacity()) *
              sizeof(int) +
          (face_slot_.capacity() + edge_slot_.capacity()) * sizeof(int) + visits_.capacity() * sizeof(Visit) +
          centroids_.capacity() * sizeof(centroids_[0]) + landmarks_.bytes();
