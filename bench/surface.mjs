@@ -353,7 +353,7 @@ export function surfaceSection(s) {
         // Nodes beyond the face nodes and 2 per edge (ShortestPathOptions::steiner) sit on long edges.
         const extra = m.geodesics.graph_nodes - m.geodesics.triangles - 2 * m.geodesics.graph_edges;
         return extra > 0
-          ? `${name(m.file)} (${extra} extra search-graph nodes, ${f(extra / m.geodesics.triangles, 2)} per triangle, on its edges longer than 1% of the diagonal)`
+          ? `${name(m.file)} (${extra} extra search-graph nodes, ${f(extra / m.geodesics.triangles, 2)} per triangle, on its edges longer than 1.5% of the diagonal: 3 nodes or more where long_edge_fraction, 0.75%, fits more than twice)`
           : name(m.file);
       }).join(', ')}`
     : 'every mesh is within it';
@@ -440,7 +440,7 @@ Paths shorter than exact: **${shorter}**.
 The defaults of wasm/core/surface/geodesic_options.h, and what they were chosen on (measured when each
 was set; the header says what each option does).
 
-- **steiner = 2, long_edge_fraction = 0.01** (phase (i), the search graph). The paper puts one node
+- **steiner = 2, long_edge_fraction = 0.0075** (phase (i), the search graph). The paper puts one node
   per face and extra nodes only on edges longer than 5% of the bounding-box diagonal. On the shared
   meshes, 4 nodes per edge and 1% took the share of paths within 0.5% of the exact geodesic distance
   from 15-96% to 99-100% when the search measured its paths link by link (3 nodes gave 94% on mountain
@@ -455,7 +455,17 @@ was set; the header says what each option does).
   with 4 nodes gave 55%); 1 node gives 99.0% on mountain and 80.6% on that folded body. On the folded
   body of "Surface at scale", whose long thin faces made the link-by-link search pick the strip of a
   neighbouring geodesic (14 of 20 pairs within 0.5%, worst 1.056; 8 nodes per edge were needed), the
-  windows find all 20.
+  windows find all 20. long_edge_fraction went from 0.01 to 0.0075 on 2026-12-03 for that coarse noisy
+  folded body: its edges up to 3% of the diagonal get 3 nodes (at 0.01 only those beyond 3%; at 0.005
+  those beyond 1.5% get 3-5), which took it from 98.2% to 99.4% within 0.5% (0.005: 99.6%) and the noisy
+  cube from 99.2% to 99.6% (0.005: 100%), for 23% more time on the folded body's paths and 80% on the
+  cube's (0.005: 40% and 150%, and 170% on the noisy coil, whose 1.5-2% edges it also splits). The
+  meshes of "Surface at scale" have at most a few edges beyond 1.5% of their diagonal (same nodes, same
+  paths). On the shared meshes it keeps 100% (spot_control_tri, hand_lowres, torus, mountain: 10 x 50 at
+  2 nodes; spot_control_tri was 99.6%), the noisy coil 99.8%. (Looking a long edge's node numbers up
+  among its own run of 256 edges, not by a binary search over all long edges, keeps the edges that do
+  not get more nodes from paying for those that do: that search had cost the refined search 25% on
+  the folded body with a few hundred long edges.)
 - **dual_heuristic_weight = 3** (the kDual search that curve tracing uses; weighted A*). On random
   whole-surface curves of nefertiti and spot_loop2_369k, a weight of 2 visits 7-20 times fewer nodes
   than 1 (the search drops from most of the trace time to a tenth of it); the paths are locally

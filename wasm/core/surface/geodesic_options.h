@@ -17,10 +17,10 @@ struct ShortestPathOptions {
   double chord_min_turn = 0.01;  // radians: a chord only where the path turns by more (else a semi-star)
   int max_passes = 100000;       // safety bound on phase (iii)'s passes (each flips several vertices)
   // ---- Phase (i), the search (dual_search.h) ----
-  double long_edge_fraction = 0.01;  // edges longer than this fraction of the bounding-box diagonal
-                                     // get one graph node per such length
-  int steiner = 2;                   // graph nodes on every edge
-  double dual_heuristic_weight = 3;  // weight of the A* Euclidean term in the kDual search
+  double long_edge_fraction = 0.0075;  // edges longer than this fraction of the bounding-box diagonal
+                                       // get one graph node per such length
+  int steiner = 2;                     // graph nodes on every edge
+  double dual_heuristic_weight = 3;    // weight of the A* Euclidean term in the kDual search
   // Landmark lower bounds (landmarks.h) on meshes of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
   // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
