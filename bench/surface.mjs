@@ -461,11 +461,10 @@ was set; the header says what each option does).
   cube from 99.2% to 99.6% (0.005: 100%), for 23% more time on the folded body's paths and 80% on the
   cube's (0.005: 40% and 150%, and 170% on the noisy coil, whose 1.5-2.2% edges it also splits). The
   meshes of "Surface at scale" have at most a few edges beyond 2.25% of their diagonal (nodes within 0.01%, the same
-  path lengths on 10 pairs each; the folded body's 10 paths 833 -> 902 ms natively, its look-ups of long edges). On the shared meshes it keeps 100% (spot_control_tri, hand_lowres, torus, mountain: 10 x 50 at
-  2 nodes; spot_control_tri was 99.6%), the noisy coil 99.8%. (Looking a long edge's node numbers up
-  among its own run of 256 edges, not by a binary search over all long edges, keeps the edges that do
-  not get more nodes from paying for those that do: that search had cost the refined search 25% on
-  the folded body with a few hundred long edges.)
+  path lengths on 10 pairs each; the folded body's 10 paths 859 -> 898 ms natively). On the shared meshes it keeps 100% (spot_control_tri, hand_lowres, torus, mountain: 10 x 50 at
+  2 nodes; spot_control_tri was 99.6%), the noisy coil 99.8%. (The long edges' nodes are numbered after all the others, and a bit per edge says which are long,
+  so that the other edges' nodes are still found by a multiplication: looking up the long edges before
+  each edge had cost the refined search 8-25% on the folded body once a few hundred edges were long.)
 - **dual_heuristic_weight = 3** (the kDual search that curve tracing uses; weighted A*). On random
   whole-surface curves of nefertiti and spot_loop2_369k, a weight of 2 visits 7-20 times fewer nodes
   than 1 (the search drops from most of the trace time to a tenth of it); the paths are locally

@@ -27,46 +27,6 @@ void faces_of_point(const TriMesh& mesh, const MeshPoint& p, std::vector<int>& f
 
 }  // namespace
 
-int DualGraph::edge_of_node(int node) const {
-  const int local = node - faces;
-  if (long_edges.empty()) return local / steiner;
-  // The last long edge whose nodes start at or before `local` (long edge i starts at
-  // long_edges[i]·steiner + long_extra[i]), then the ordinary edges after it.
-  const int b = local >> kBlockBits;
-  int lo = node_block[b], hi = node_block[b + 1];
-  while (lo < hi) {
-    const int mid = (lo + hi) / 2;
-    if (long_edges[mid] * steiner + long_extra[mid] <= local)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  if (lo == 0) return local / steiner;
-  const int i = lo - 1, first = long_edges[i] * steiner + long_extra[i];
-  const int end = first + steiner + long_extra[i + 1] - long_extra[i];
-  return local < end ? long_edges[i] : long_edges[i] + 1 + (local - end) / steiner;
-}
-
-void DualGraph::index_long_edges() {
-  edge_block.clear(), node_block.clear();
-  if (long_edges.empty()) return;
-  const int count = static_cast<int>(long_edges.size());
-  // Long edges before edge b·2^k; long edges starting at or before local node b·2^k (the last
-  // entry of each: all of them, for the look-ups of the last run).
-  for (int b = 0, i = 0; (b << kBlockBits) < edges; ++b) {
-    while (i < count && long_edges[i] < (b << kBlockBits)) ++i;
-    edge_block.push_back(i);
-  }
-  edge_block.push_back(count);
-  const int local_nodes = nodes() - faces;
-  for (int b = 0, i = 0; (b << kBlockBits) < local_nodes; ++b) {
-    while (i < count && long_edges[i] * steiner + long_extra[i] <= (b << kBlockBits)) ++i;
-    node_block.push_back(i);
-  }
-  node_block.push_back(count);
-  edge_block.shrink_to_fit(), node_block.shrink_to_fit();
-}
-
 DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
     : mesh_(mesh),
       dual_heuristic_weight_(options.dual_heuristic_weight),
@@ -88,18 +48,21 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
       graph_.halfedge_edge[3 * f + k] = static_cast<int>(graph_.edge_halfedge.size());
       graph_.edge_halfedge.push_back(3 * f + k);
       const double len = (mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]).norm();
-      const int extra = len > graph_.long_edge ? static_cast<int>(std::ceil(len / graph_.long_edge)) - 1 : 0;
-      if (extra > graph_.steiner) {
-        if (graph_.long_extra.empty()) graph_.long_extra.push_back(0);
+      const int count = len > graph_.long_edge ? static_cast<int>(std::ceil(len / graph_.long_edge)) - 1 : 0;
+      if (count > graph_.steiner) {
+        if (graph_.long_first.empty()) graph_.long_first.push_back(0);
         graph_.long_edges.push_back(static_cast<int>(graph_.edge_halfedge.size()) - 1);
-        graph_.long_extra.push_back(graph_.long_extra.back() + extra - graph_.steiner);
+        graph_.long_first.push_back(graph_.long_first.back() + count);
       }
     }
   }
   graph_.edges = static_cast<int>(graph_.edge_halfedge.size());
   graph_.long_edges.shrink_to_fit();
-  graph_.long_extra.shrink_to_fit();
-  graph_.index_long_edges();
+  graph_.long_first.shrink_to_fit();
+  if (!graph_.long_edges.empty()) {
+    graph_.long_bits.assign(graph_.edges / 64 + 1, 0);
+    for (int e : graph_.long_edges) graph_.long_bits[e >> 6] |= uint64_t{1} << (e & 63);
+  }
   face_slot_.assign(nf, -1);
   edge_slot_.assign(graph_.edges, -1);
   centroids_.resize(nf);
@@ -112,8 +75,9 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
 
 size_t DualSearch::bytes() const {
   return (graph_.halfedge_edge.capacity() + graph_.edge_halfedge.capacity() + graph_.long_edges.capacity() +
-          graph_.long_extra.capacity() + graph_.edge_block.capacity() + graph_.node_block.capacity()) *
+          graph_.long_first.capacity()) *
              sizeof(int) +
+         graph_.long_bits.capacity() * sizeof(uint64_t) +
          (face_slot_.capacity() + edge_slot_.capacity()) * sizeof(int) + visits_.capacity() * sizeof(Visit) +
          centroids_.capacity() * sizeof(centroids_[0]) + landmarks_.bytes();
 }

@@ -36,41 +36,38 @@ struct DualGraph {
   double long_edge = 0;            // edges longer than this get one node per such length
   std::vector<int> halfedge_edge;  // #3F: undirected edge of half-edge (f, k)
   std::vector<int> edge_halfedge;  // #E: one half-edge (3f + k) of each edge
-  // The edges with more than `steiner` nodes, ascending, and the prefix sums of their extra nodes
-  // (#long + 1; both empty when there are none). Few on most meshes, so kept sparse: until
-  // 2026-12-02 a node offset per edge (6 bytes per triangle) was stored as soon as one edge was long.
-  std::vector<int> long_edges, long_extra;
-  // Where to look in them: for each run of 2^kBlockBits edges (edge_block) and of 2^kBlockBits edge
-  // nodes (node_block), how many long edges come before its first edge (start before its first
-  // node), and one entry more at the end, so that a look-up searches only its run's long edges,
-  // not all of them (a binary search over all of them on every node cost a quarter of the refined
-  // search on a mesh with a few hundred long edges). Empty when there are no long edges.
-  static constexpr int kBlockBits = 8;
-  std::vector<int> edge_block, node_block;
-  // Fills edge_block and node_block from long_edges and long_extra.
-  void index_long_edges();
-  // Number of nodes: F face nodes, then the edge nodes edge by edge.
-  int nodes() const { return faces + edges * steiner + (long_extra.empty() ? 0 : long_extra.back()); }
+  // The edges with more than `steiner` nodes (long edges), ascending; where each one's nodes start
+  // after the ordinary ones (the prefix sums of their node counts, #long + 1); and one bit per edge,
+  // set for the long ones. All empty when there are none. Few edges are long on most meshes, so an
+  // ordinary edge's nodes are found by a multiplication and one bit (until 2026-12-02 a node offset
+  // per edge, 6 bytes per triangle, was stored as soon as one edge was long; until 2026-12-03 the
+  // long edges' nodes lay among the others, and every look-up searched the long edges before it,
+  // which cost the refined search 8-25% on the folded body with a few hundred long edges).
+  std::vector<int> long_edges, long_first;
+  std::vector<uint64_t> long_bits;
+  // Number of nodes: F face nodes, `steiner` for every edge (a long edge's stay unused), then the
+  // long edges' own, edge by edge.
+  int nodes() const { return faces + edges * steiner + (long_first.empty() ? 0 : long_first.back()); }
+  bool is_long(int e) const { return !long_bits.empty() && (long_bits[e >> 6] >> (e & 63) & 1); }
   // The nodes of edge e are [first_node(e), end_node(e)).
   int first_node(int e) const {
-    return long_edges.empty() ? faces + e * steiner : faces + e * steiner + long_extra[long_before(e)];
+    return is_long(e) ? faces + edges * steiner + long_first[long_index(e)] : faces + e * steiner;
   }
   int end_node(int e) const {
-    if (long_edges.empty()) return faces + (e + 1) * steiner;
-    const int i = long_before(e);
-    const bool is_long = i < static_cast<int>(long_edges.size()) && long_edges[i] == e;
-    return faces + (e + 1) * steiner + long_extra[i + (is_long ? 1 : 0)];
+    return is_long(e) ? faces + edges * steiner + long_first[long_index(e) + 1] : faces + (e + 1) * steiner;
   }
   // The edge an edge node lies on (node >= faces).
-  int edge_of_node(int node) const;
+  int edge_of_node(int node) const {
+    const int local = node - faces;
+    if (local < edges * steiner) return local / steiner;
+    const int tail = local - edges * steiner;  // the long edge whose nodes start last at or before it
+    return long_edges[std::upper_bound(long_first.begin(), long_first.end(), tail) - long_first.begin() - 1];
+  }
 
  private:
-  // How many long edges come before edge e (the index of the first long edge >= e).
-  int long_before(int e) const {
-    const int b = e >> kBlockBits;
-    return static_cast<int>(
-        std::lower_bound(long_edges.begin() + edge_block[b], long_edges.begin() + edge_block[b + 1], e) -
-        long_edges.begin());
+  // The index of long edge e among long_edges.
+  int long_index(int e) const {
+    return static_cast<int>(std::lower_bound(long_edges.begin(), long_edges.end(), e) - long_edges.begin());
   }
 };
 
