@@ -85,7 +85,8 @@ size_t DualSearch::bytes() const {
 // Position of graph node `node` (on edge e, -1 for a face node): a face centroid, or a point along an edge.
 Vec3 DualSearch::node_position(int node, int e) const {
   if (node < graph_.faces) return centroids_[node].cast<double>();
-  const int first = graph_.first_node(e), count = graph_.end_node(e) - first;
+  const auto [first, end] = graph_.node_range(e);
+  const int count = end - first;
   const int h = graph_.edge_halfedge[e];
   const auto& t = mesh_.triangles[h / 3];
   const double s = double(node - first + 1) / (count + 1);
@@ -285,12 +286,12 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
       }
       return slot;
     }
-    const int first = graph_.first_node(e);
+    const auto [first, end] = graph_.node_range(e);
     int& slot = edge_slot_[e];
     if (slot < 0) {
       slot = static_cast<int>(visits_.size());
       const int f = graph_.edge_halfedge[e] / 3;
-      for (int n = first, end = graph_.end_node(e); n < end; ++n) {
+      for (int n = first; n < end; ++n) {
         const Vec3 p = node_position(n, e);
         visits_.push_back({std::numeric_limits<float>::infinity(), heuristic(p, f), n, -1, p.cast<float>(), false, -1,
                            Eigen::Vector3f::Zero(), 0.f, 0.f, 0.f});
@@ -328,7 +329,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
     for (int k = 0; k < 3; ++k) {
       const int e = graph_.halfedge_edge[3 * f + k];
       if (e == skip_edge) continue;
-      for (int n = graph_.first_node(e), end = graph_.end_node(e); n < end; ++n) each(n, e);
+      for (auto [n, end] = graph_.node_range(e); n < end; ++n) each(n, e);
     }
   };
   auto is_target = [&](int f) { return std::find(targets.begin(), targets.end(), f) != targets.end(); };
@@ -386,7 +387,8 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
         for (int k = 0; k < 3; ++k) {
           const int other = graph_.halfedge_edge[3 * f + k];
           if (other == e) continue;
-          const int first = graph_.first_node(other), count = graph_.end_node(other) - first;
+          const auto [first, end] = graph_.node_range(other);
+          const int count = end - first;
           const int r0 = visit(first, other);
           const float other_length = edge_length(other);  // (the stretch a vertex or u sees: all of it)
           for (int rn = r0; rn < r0 + count; ++rn) {
@@ -455,7 +457,8 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
     } else {
       const int e = graph_.edge_of_node(node);
       edge_slot_[e] = -1;
-      i += graph_.end_node(e) - graph_.first_node(e) - 1;
+      const auto [first, end] = graph_.node_range(e);
+      i += end - first - 1;
     }
   }
   visits_.clear();

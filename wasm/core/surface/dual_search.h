@@ -49,13 +49,17 @@ struct DualGraph {
   // long edges' own, edge by edge.
   int nodes() const { return faces + edges * steiner + (long_first.empty() ? 0 : long_first.back()); }
   bool is_long(int e) const { return !long_bits.empty() && (long_bits[e >> 6] >> (e & 63) & 1); }
-  // The nodes of edge e are [first_node(e), end_node(e)).
-  int first_node(int e) const {
-    return is_long(e) ? faces + edges * steiner + long_first[long_index(e)] : faces + e * steiner;
+  // The nodes of edge e are [first, end) (one look-up among the long edges for both ends).
+  struct NodeRange {
+    int first, end;
+  };
+  NodeRange node_range(int e) const {
+    if (!is_long(e)) return {faces + e * steiner, faces + (e + 1) * steiner};
+    const int i = long_index(e), tail = faces + edges * steiner;
+    return {tail + long_first[i], tail + long_first[i + 1]};
   }
-  int end_node(int e) const {
-    return is_long(e) ? faces + edges * steiner + long_first[long_index(e) + 1] : faces + (e + 1) * steiner;
-  }
+  int first_node(int e) const { return node_range(e).first; }
+  int end_node(int e) const { return node_range(e).end; }
   // The edge an edge node lies on (node >= faces).
   int edge_of_node(int node) const {
     const int local = node - faces;
