@@ -25,8 +25,22 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     path = GeodesicPath{a, b, {}, {}, {}};
     return false;
   }
+  const int reverse_faces = straightener_.options.dual_reverse_search_faces;
+  if (graph == SearchGraph::kDual && reverse_faces > 0 && strip_.size() >= static_cast<size_t>(reverse_faces) &&
+      search_.initial_strip(b, a, back_, stats, graph)) {
+    std::reverse(back_.begin(), back_.end());
+    if (funnel_length(a, b, back_) < funnel_length(a, b, strip_)) strip_.swap(back_);
+  }
   straightener_.straighten(a, b, strip_, path, stats);
   return true;
+}
+
+double GeodesicSolver::funnel_length(const MeshPoint& a, const MeshPoint& b, const std::vector<int>& strip) {
+  MeshPoint start, end;
+  point_in_face(mesh_, a, strip.front(), start);
+  point_in_face(mesh_, b, strip.back(), end);
+  straightener_.begin(start, end, strip);
+  return straightener_.length();
 }
 
 namespace {

@@ -40,6 +40,7 @@ class GeodesicSolver {
   // ---- Paths ----
   // The locally shortest path from a to b (mesh space). Always succeeds on a connected mesh; when b
   // cannot be reached (another component) the path is empty (strip empty) and false is returned.
+  // With the kDual graph, a long strip is also searched from b to a (dual_reverse_search_faces).
   bool shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats = nullptr,
                      SearchGraph graph = SearchGraph::kRefined);
 
@@ -66,7 +67,11 @@ class GeodesicSolver {
   const TriMesh& mesh_;
   DualSearch search_;
   Straightener straightener_;
+  // The length of the funnel path from a to b inside `strip` (phase (ii) alone).
+  double funnel_length(const MeshPoint& a, const MeshPoint& b, const std::vector<int>& strip);
+
   std::vector<int> strip_;  // the strip between the phases
+  std::vector<int> back_;   // the kDual strip searched from b to a
   std::vector<int> fan_;    // straighten_through's: the faces around a vertex where two pieces meet
 };
 

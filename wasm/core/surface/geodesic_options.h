@@ -21,6 +21,17 @@ struct ShortestPathOptions {
                                        // get one graph node per such length
   int steiner = 2;                     // graph nodes on every edge
   double dual_heuristic_weight = 3;    // weight of the A* Euclidean term in the kDual search
+  // A kDual strip of at least this many faces is searched again from b to a, and the strip whose
+  // funnel path is shorter is straightened (0: never). The greedy search's strip depends on the way
+  // it goes: its A* term leads it down the landmarks' distance fields, so on a tube it runs along the
+  // tube first and turns to the far end's side at the end (an L), from the other end the other way
+  // round; the straightening sweeps the region between strip and geodesic, and the shorter strip is
+  // (mostly) the nearer. Measured 2026-12-03 on the benchmark's 100 random OLR curves: in one wasm
+  // module against the tree before (bench:ab), the coil's curves took 0.89 of the time in total and
+  // the folded body's 0.86, spot_loop2_369k's 0.93, nefertiti's the same (no strip that long); per
+  // curve the median changed by 0-4%; the coil's curves came out 0.3% shorter, the folded body's 3%.
+  // Natively the slowest of them took 37-40% less. 128, 256 and 1024 faces did about as well.
+  int dual_reverse_search_faces = 512;
   // Landmark lower bounds (landmarks.h) on meshes of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
   // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
