@@ -28,9 +28,13 @@ struct ShortestPathOptions {
   // round; the straightening sweeps the region between strip and geodesic, and the shorter strip is
   // (mostly) the nearer. Measured 2026-12-03 on the benchmark's 100 random OLR curves: in one wasm
   // module against the tree before (bench:ab), the coil's curves took 0.89 of the time in total and
-  // the folded body's 0.86, spot_loop2_369k's 0.93, nefertiti's the same (no strip that long); per
-  // curve the median changed by 0-4%; the coil's curves came out 0.3% shorter, the folded body's 3%.
-  // Natively the slowest of them took 37-40% less. 128, 256 and 1024 faces did about as well.
+  // the folded body's 0.86, spot_loop2_369k's 0.94, nefertiti's the same (no strip that long), the
+  // noisy spot's 1.07 (its sides straighten cheaply, and the second search and layouts cost more
+  // than they save); per curve the median changed by 0-4%. Natively the slowest curves of the coil
+  // and the folded body took 37-40% less. Of the long sides (native, 300 random pairs), the one
+  // chosen straightens in 0.81-0.86 of the forward one's time and comes out 0.4-1.9% shorter; the
+  // search lengths (free) chose nearly as well, the funnel paths' apex counts worse than always
+  // forward. 128, 256 and 1024 faces did about as well as 512.
   int dual_reverse_search_faces = 512;
   // Landmark lower bounds (landmarks.h) on meshes of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
