@@ -475,6 +475,18 @@ was set; the header says what each option does).
   average 0.3% longer on nefertiti, 0.2% shorter on spot_loop2_369k; 4 makes nefertiti's 1% longer).
   (Measured with the label-correcting SLF/LLL search of before 2026-12-02; the search is now a heap
   A*, see "Surface at scale".)
+- **dual_reverse_search_faces = 512** (2026-12-03): a kDual strip of 512 faces or more is searched again
+  from the far end, and the one whose funnel path is shorter is straightened. The greedy search's A*
+  term leads it down the landmarks' distance fields, so its strip depends on the end it starts from,
+  and the straightening's work grows with the region between strip and geodesic. Of the long sides of
+  300 random pairs (native), the one chosen straightens in 0.81-0.86 of the forward one's time (an
+  oracle picking the faster: 0.75-0.81) and comes out 0.4-1.9% shorter; choosing by the two searches'
+  lengths (free) did nearly as well, by the funnel paths' apex counts worse than the forward strip
+  alone. Random whole-surface curves in one wasm module against the tree before (bench:ab, 100
+  curves): 0.89x the time in total on the coil, 0.86x on the folded body, 0.94x on spot_loop2_369k,
+  1.00x on nefertiti (no side that long) and 1.07x on the noisy spot, whose sides straighten cheaply
+  enough that the second search and layouts cost more than they save. 128, 256 and 1024 faces did
+  about as well.
 - **landmarks = 8, landmark_weight = 2, refined_landmark_scale = 0, landmark_min_faces = 16384**
   (phase (i)'s landmark term, 2026-12-02, section "Surface at scale"). 8 landmarks take 16 bytes per
   triangle, what giving search records per edge rather than per node saved (18). Random whole-surface
@@ -488,7 +500,11 @@ was set; the header says what each option does).
   dual-graph distances overestimate the refined graph's by up to a third on the coil, and a scale that
   makes the search cheap there is not admissible elsewhere (0.85: the coil's refined searches expand
   23k nodes instead of 1.2M, but 90% of nefertiti's paths within 0.5% of exact instead of 100%; 0.5
-  to 0.7 keep nefertiti's lengths but expand 0.8-1.2M nodes on the coil again).
+  to 0.7 keep nefertiti's lengths but expand 0.8-1.2M nodes on the coil again). Even landmark distances
+  that are exact (MMP from the same 8 landmark faces, an oracle, 2026-12-03) cut the coil's refined
+  searches only from 7.1M to 2.2M nodes (20 pairs, 2348 -> 871 ms natively): from far along a thin tube
+  every landmark sees how far a node is along the tube, not where it lies around it, so the search
+  still takes in the tube's whole girth between the ends.
 - **chord_min_turn = 0.01 rad** (phase (iii)). Late in the straightening the path bends a little at
   apices far apart, and a chord there walks all the way between the neighbouring apices for a small
   gain; smaller bends get the semi-star (and zipper) flip. On random whole-surface curves (OLR, 5
