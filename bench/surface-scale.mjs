@@ -260,7 +260,18 @@ body -0.9%, noisy spot +12.7%, coil +3.8%, nefertiti +2.9%. On a noisy surface t
 line passes (943 shots, one path aimed); on the coil a long side winds round the tube, a shot that passes the end
 point does so a turn of the coil away, where the face's plane says nothing about where the end point is, and the
 shots that land find longer geodesics (wound once more) that the path keeps out. An aimed path can also be another
-locally shortest path than the flips' (of 60 folded-body sides, one came out 2.6% longer).`;
+locally shortest path than the flips' (of 60 folded-body sides, one came out 2.6% longer).
+
+Kept on 2026-12-03 (dual_reverse_search_faces, "Why these defaults"): a greedy strip of 512 faces or more is also
+searched from the far end, and the one with the shorter funnel path is straightened. In one wasm module against the
+tree before (bench:ab, 100 curves, best of 3): total trace time 0.89x on the coil, 0.87x on the folded body, 0.94x
+on spot_loop2_369k, 1.00x on nefertiti, 1.07x on the noisy spot; per-curve medians within 0-4%. The runs above came
+after it on a machine slower than the last record's (nefertiti, whose curves it does not change, 2.57 -> 2.74 ms;
+spot_loop2_369k's baseline in the A/B 5.07 -> 5.55 ms within the day). Also measured and dropped that day: straightening
+the tail of a long path in windows around its reflex vertices (each between two apices, so that a pass lays out the
+window, not the strip): 6-18% less straightening on the coil, nothing on the folded body, whose reflex vertices lie
+all along its sliding paths; more re-aims per chord (3 instead of 1): 7-11% fewer flips but 13-20% more faces walked;
+a third, Euclidean-only strip to choose from: it floods the folded body.`;
 
 const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
 const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
