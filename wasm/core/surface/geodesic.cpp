@@ -21,7 +21,7 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     path = reversed(mesh_, path);
     return reached;
   }
-  if (!search_.initial_strip(a, b, strip_, stats, graph)) {
+  if (!initial_strip(a, b, strip_, stats, graph)) {
     path = GeodesicPath{a, b, {}, {}, {}};
     return false;
   }
@@ -29,7 +29,8 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
   if (graph == SearchGraph::kDual && reverse_faces > 0 && strip_.size() >= static_cast<size_t>(reverse_faces) &&
       search_.initial_strip(b, a, back_, stats, graph)) {
     std::reverse(back_.begin(), back_.end());
-    if (funnel_length(a, b, back_) < funnel_length(a, b, strip_)) strip_.swap(back_);
+    if (funnel_length(a, b, back_) < funnel_length(a, b, strip_))
+      strip_.swap(back_), search_length_ = search_.last_length();
   }
   straightener_.straighten(a, b, strip_, path, stats);
   return true;

@@ -47,10 +47,13 @@ class GeodesicSolver {
   // Phase (i) alone (for tests and benchmarks): the face strip from a to b.
   bool initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats = nullptr,
                      SearchGraph graph = SearchGraph::kRefined) {
-    return search_.initial_strip(a, b, strip, stats, graph);
+    const bool reached = search_.initial_strip(a, b, strip, stats, graph);
+    search_length_ = search_.last_length();
+    return reached;
   }
-  // The search-graph length of the last initial_strip's (or searched shortest_path's) path.
-  double last_search_length() const { return search_.last_length(); }
+  // The search-graph length of the last initial_strip's (or searched shortest_path's) path (of a
+  // kDual path searched both ways, the strip's that was straightened).
+  double last_search_length() const { return search_length_; }
   // Phases (ii)+(iii) on a given strip (consecutive faces adjacent; a on strip.front(), b on
   // strip.back()); `strip` becomes the straightened path's.
   void straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
@@ -72,7 +75,8 @@ class GeodesicSolver {
 
   std::vector<int> strip_;  // the strip between the phases
   std::vector<int> back_;   // the kDual strip searched from b to a
-  std::vector<int> fan_;    // straighten_through's: the faces around a vertex where two pieces meet
+  double search_length_ = 0;
+  std::vector<int> fan_;  // straighten_through's: the faces around a vertex where two pieces meet
 };
 
 }  // namespace splinekit::surface
