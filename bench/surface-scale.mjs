@@ -271,7 +271,11 @@ spot_loop2_369k's baseline in the A/B 5.07 -> 5.55 ms within the day). Also meas
 the tail of a long path in windows around its reflex vertices (each between two apices, so that a pass lays out the
 window, not the strip): 6-18% less straightening on the coil, nothing on the folded body, whose reflex vertices lie
 all along its sliding paths; more re-aims per chord (3 instead of 1): 7-11% fewer flips but 13-20% more faces walked;
-a third, Euclidean-only strip to choose from: it floods the folded body.`;
+a third, Euclidean-only strip to choose from: it floods the folded body; in the tail (16 or fewer reflex vertices
+not frozen), a chord across the reflex vertices next to one, to the nearest frozen apices or the ends: 8-21% fewer
+flips, but its walks entered 2.8 times the faces and the straightening took 1.8-2.1 times as long (spot_loop2_369k,
+the folded body); when a pass's flips together do not shorten the path, keeping its semi-stars with the largest
+turn's flip instead of that flip alone: passes within 2%, times within the run-to-run noise.`;
 
 const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
 const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
