@@ -67,16 +67,16 @@ class GeodesicSolver {
   bool straighten_through(const std::vector<GeodesicPath>& pieces, GeodesicPath& path, PathStats* stats = nullptr);
 
  private:
-  const TriMesh& mesh_;
-  DualSearch search_;
-  Straightener straightener_;
   // The length of the funnel path from a to b inside `strip` (phase (ii) alone).
   double funnel_length(const MeshPoint& a, const MeshPoint& b, const std::vector<int>& strip);
 
-  std::vector<int> strip_;  // the strip between the phases
-  std::vector<int> back_;   // the kDual strip searched from b to a
-  double search_length_ = 0;
-  std::vector<int> fan_;  // straighten_through's: the faces around a vertex where two pieces meet
+  const TriMesh& mesh_;
+  DualSearch search_;
+  Straightener straightener_;
+  std::vector<int> strip_;    // the strip between the phases
+  std::vector<int> back_;     // the kDual strip searched from b to a
+  std::vector<int> fan_;      // straighten_through's: the faces around a vertex where two pieces meet
+  double search_length_ = 0;  // last_search_length()
 };
 
 }  // namespace splinekit::surface

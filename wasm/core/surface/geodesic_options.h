@@ -22,19 +22,8 @@ struct ShortestPathOptions {
   int steiner = 2;                     // graph nodes on every edge
   double dual_heuristic_weight = 3;    // weight of the A* Euclidean term in the kDual search
   // A kDual strip of at least this many faces is searched again from b to a, and the strip whose
-  // funnel path is shorter is straightened (0: never). The greedy search's strip depends on the way
-  // it goes: its A* term leads it down the landmarks' distance fields, so on a tube it runs along the
-  // tube first and turns to the far end's side at the end (an L), from the other end the other way
-  // round; the straightening sweeps the region between strip and geodesic, and the shorter strip is
-  // (mostly) the nearer. Measured 2026-12-03 on the benchmark's 100 random OLR curves: in one wasm
-  // module against the tree before (bench:ab), the coil's curves took 0.89 of the time in total and
-  // the folded body's 0.86, spot_loop2_369k's 0.94, nefertiti's the same (no strip that long), the
-  // noisy spot's 1.07 (its sides straighten cheaply, and the second search and layouts cost more
-  // than they save); per curve the median changed by 0-4%. Natively the slowest curves of the coil
-  // and the folded body took 37-40% less. Of the long sides (native, 300 random pairs), the one
-  // chosen straightens in 0.81-0.86 of the forward one's time and comes out 0.4-1.9% shorter; the
-  // search lengths (free) chose nearly as well, the funnel paths' apex counts worse than always
-  // forward. 128, 256 and 1024 faces did about as well as 512.
+  // funnel path is shorter is straightened (0: never): the greedy search's strip depends on the end
+  // it starts from, and the straightening's work grows with the region between strip and geodesic.
   int dual_reverse_search_faces = 512;
   // Landmark lower bounds (landmarks.h) on meshes of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
