@@ -208,9 +208,10 @@ TEST(SearchGraph, GivesLongEdgesTheirNodesAndNumbersThemInOrder) {
       const bool is_long = count > steiner;
       long_count += is_long;
       EXPECT_EQ(graph.is_long(e), is_long) << "edge " << e;
-      ASSERT_EQ(graph.first_node(e), is_long ? tail : graph.faces + e * steiner) << "edge " << e;
-      ASSERT_EQ(graph.end_node(e) - graph.first_node(e), count) << "edge " << e;
-      for (int n = graph.first_node(e); n < graph.end_node(e); ++n) {
+      const auto [first, end] = graph.node_range(e);
+      ASSERT_EQ(first, is_long ? tail : graph.faces + e * steiner) << "edge " << e;
+      ASSERT_EQ(end - first, count) << "edge " << e;
+      for (int n = first; n < end; ++n) {
         ASSERT_EQ(graph.edge_of_node(n), e);
         ASSERT_EQ(owner[n], -1) << "node " << n << " twice";
         owner[n] = e;

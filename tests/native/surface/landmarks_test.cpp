@@ -69,7 +69,8 @@ struct RefinedReference {
       position[f] = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3;
     }
     for (int e = 0; e < graph.edges; ++e) {
-      const int h = graph.edge_halfedge[e], first = graph.first_node(e), count = graph.end_node(e) - first;
+      const auto [first, end] = graph.node_range(e);
+      const int h = graph.edge_halfedge[e], count = end - first;
       const auto& t = mesh.triangles[h / 3];
       for (int i = 0; i < count; ++i) {
         const double s = double(i + 1) / (count + 1);
@@ -81,7 +82,7 @@ struct RefinedReference {
       face_nodes[f].push_back({f, -1});
       for (int k = 0; k < 3; ++k) {
         const int e = graph.halfedge_edge[3 * f + k];
-        for (int n = graph.first_node(e); n < graph.end_node(e); ++n) face_nodes[f].push_back({n, e});
+        for (auto [n, end] = graph.node_range(e); n < end; ++n) face_nodes[f].push_back({n, e});
       }
     }
   }

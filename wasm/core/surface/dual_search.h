@@ -58,8 +58,6 @@ struct DualGraph {
     const int i = long_index(e), tail = faces + edges * steiner;
     return {tail + long_first[i], tail + long_first[i + 1]};
   }
-  int first_node(int e) const { return node_range(e).first; }
-  int end_node(int e) const { return node_range(e).end; }
   // The edge an edge node lies on (node >= faces).
   int edge_of_node(int node) const {
     const int local = node - faces;
@@ -125,7 +123,9 @@ class DualSearch {
   int link_face(int a, int b) const;  // a face holding both nodes
   // The record of `node` (on edge `edge`, -1 for a face node); -1 when untouched.
   int slot(int node, int edge) const {
-    return edge < 0 ? face_slot_[node] : edge_slot_[edge] < 0 ? -1 : edge_slot_[edge] + node - graph_.first_node(edge);
+    return edge < 0               ? face_slot_[node]
+           : edge_slot_[edge] < 0 ? -1
+                                  : edge_slot_[edge] + node - graph_.node_range(edge).first;
   }
   int slot(int node) const { return slot(node, node < graph_.faces ? -1 : graph_.edge_of_node(node)); }
 
