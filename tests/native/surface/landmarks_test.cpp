@@ -136,35 +136,137 @@ const TriMesh& small_coil() {
   return mesh;
 }
 
+// The connected components of the dual graph (faces sharing an edge), by a search of its own.
+std::vector<int> component_of(const TriMesh& mesh) {
+  std::vector<int> part(mesh.triangles.size(), -1), stack;
+  int parts = 0;
+  for (int s = 0; s < static_cast<int>(part.size()); ++s) {
+    if (part[s] >= 0) continue;
+    for (part[s] = parts, stack.assign(1, s); !stack.empty();) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int g : mesh.adjacency[f])
+        if (g >= 0 && part[g] < 0) part[g] = parts, stack.push_back(g);
+    }
+    ++parts;
+  }
+  return part;
+}
+
+// For 20 random targets among `faces` and 200 random faces among them each: the bound never exceeds
+// the dual distance (asserted), and over the pairs on different turns of a coil (the surface
+// distance far beyond the Euclidean one), the mean share of the distance the bound recovers, and
+// how many such pairs there were.
+std::pair<double, int> far_pair_tightness(const TriMesh& mesh, Landmarks& landmarks, const std::vector<int>& faces,
+                                          unsigned seed) {
+  const std::vector<Eigen::Vector3f> c = centroids(mesh);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<size_t> pick(0, faces.size() - 1);
+  int far_pairs = 0;
+  double tightness = 0;
+  for (int i = 0; i < 20; ++i) {
+    const int t = faces[pick(rng)];
+    const std::vector<double> d = reference_distances(mesh, t);
+    landmarks.set_target(&t, 1);
+    for (int k = 0; k < 200; ++k) {
+      const int f = faces[pick(rng)];
+      const double bound = landmarks.bound(f);
+      EXPECT_LE(bound, d[f] * (1 + 1e-6) + 1e-9) << "face " << f << " to " << t;
+      const double euclid = (c[f] - c[t]).norm();
+      if (d[f] > 5 * euclid && d[f] > 3) ++far_pairs, tightness += bound / d[f];
+    }
+  }
+  return {far_pairs ? tightness / far_pairs : 0, far_pairs};
+}
+
+std::vector<int> faces_of(const std::vector<int>& part, int which) {
+  std::vector<int> faces;
+  for (int f = 0; f < static_cast<int>(part.size()); ++f)
+    if (part[f] == which) faces.push_back(f);
+  return faces;
+}
+
 TEST(Landmarks, BoundNeverExceedsTheDualDistanceAndFollowsTheCoil) {
   const TriMesh& mesh = small_coil();
-  const std::vector<Eigen::Vector3f> c = centroids(mesh);
-  Landmarks landmarks(mesh, c, 8);
+  Landmarks landmarks(mesh, centroids(mesh), 8);
   ASSERT_EQ(landmarks.count(), 8);
   const int nf = static_cast<int>(mesh.triangles.size());
   // The first landmark is the face farthest from face 0: on an open coil, at the other end.
   const std::vector<double> from0 = reference_distances(mesh, 0);
   EXPECT_NEAR(from0[landmarks.faces()[0]], *std::max_element(from0.begin(), from0.end()), 1e-4);
-  std::mt19937 rng(5);
-  std::uniform_int_distribution<int> face(0, nf - 1);
-  int far_pairs = 0;
-  double tightness = 0;
-  for (int i = 0; i < 20; ++i) {
-    const int t = face(rng);
-    const std::vector<double> d = reference_distances(mesh, t);
-    landmarks.set_target(&t, 1);
-    for (int k = 0; k < 200; ++k) {
-      const int f = face(rng);
-      const double bound = landmarks.bound(f);
-      ASSERT_LE(bound, d[f] * (1 + 1e-6) + 1e-9) << "face " << f << " to " << t;
-      // Faces on other turns: the surface distance is far beyond the Euclidean one.
-      const double euclid = (c[f] - c[t]).norm();
-      if (d[f] > 5 * euclid && d[f] > 3) ++far_pairs, tightness += bound / d[f];
-    }
-  }
+  const auto [tightness, far_pairs] = far_pair_tightness(mesh, landmarks, faces_of(std::vector<int>(nf, 0), 0), 5);
   ASSERT_GT(far_pairs, 100);
   // Landmarks at the ends and along the coil: the bound recovers most of the distance there.
-  EXPECT_GT(tightness / far_pairs, 0.9);
+  EXPECT_GT(tightness, 0.9);
+}
+
+// A scan comes with specks of debris, each its own component (the Stanford dragon: 150 beside a
+// body of 871k faces). Chosen farthest-first over the whole mesh, every landmark went to a speck
+// (unreached from all the others, so "farthest"), and the body's searches had only the Euclidean
+// term: on that dragon 7 times the nodes.
+TEST(Landmarks, AScansSpecksOfDebrisGetNoneAndItsBodyGetsThemAll) {
+  const TriMesh mesh = testing::build(testing::with_debris(testing::coil(800, 16), 40, 3));
+  const std::vector<int> part = component_of(mesh);
+  const int body = part[std::max_element(mesh.triangles.begin(), mesh.triangles.end()) - mesh.triangles.begin()];
+  const std::vector<int> body_faces = faces_of(part, body);
+  ASSERT_EQ(body_faces.size(), 25600u);
+  ASSERT_EQ(*std::max_element(part.begin(), part.end()), 40);  // (41 components)
+  Landmarks landmarks(mesh, centroids(mesh), 8, 16384);
+  ASSERT_EQ(landmarks.count(), 8);
+  for (int f : landmarks.faces()) EXPECT_EQ(part[f], body) << "landmark on face " << f;
+  // On the body, as on the coil alone.
+  const auto [tightness, far_pairs] = far_pair_tightness(mesh, landmarks, body_faces, 5);
+  ASSERT_GT(far_pairs, 100);
+  EXPECT_GT(tightness, 0.9);
+  // A speck is out of every landmark's reach: it bounds nothing (and a search there ends at once).
+  const int speck = static_cast<int>(std::find_if(part.begin(), part.end(), [&](int p) { return p != body; }) - part.begin());
+  landmarks.set_target(&body_faces[0], 1);
+  EXPECT_EQ(landmarks.bound(speck), 0);
+  // The solver's defaults place them so (a body of 25,600 faces is above landmark_min_faces).
+  GeodesicSolver solver(mesh);
+  ASSERT_EQ(solver.landmarks().count(), 8);
+  for (int f : solver.landmarks().faces()) EXPECT_EQ(part[f], body);
+}
+
+// Two bodies large enough each get landmarks, the first of each the face farthest from its first
+// face, in order of size; the bound holds within each and says nothing across them. A component
+// below the threshold gets none: all go to the other.
+TEST(Landmarks, EveryLargeComponentGetsItsOwn) {
+  testing::Arrays a = testing::coil(400, 16), b = testing::coil(200, 16);
+  const int offset = a.vertices();
+  for (size_t i = 0; i < b.positions.size(); i += 3) b.positions[i] += 5;  // apart from the first
+  for (int& v : b.triangles) v += offset;
+  a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+  a.triangles.insert(a.triangles.end(), b.triangles.begin(), b.triangles.end());
+  const TriMesh mesh = testing::build(a);
+  const std::vector<int> part = component_of(mesh);
+  ASSERT_EQ(*std::max_element(part.begin(), part.end()), 1);
+  const int large = faces_of(part, 0).size() > faces_of(part, 1).size() ? 0 : 1;
+  const std::vector<int> big = faces_of(part, large), small = faces_of(part, 1 - large);
+  ASSERT_EQ(big.size(), 12800u);
+  ASSERT_EQ(small.size(), 6400u);
+  Landmarks both(mesh, centroids(mesh), 6, 1000);
+  ASSERT_EQ(both.count(), 6);
+  ASSERT_EQ(part[both.faces()[0]], large);
+  ASSERT_EQ(part[both.faces()[1]], 1 - large);
+  for (int k = 0; k < 2; ++k) {
+    const std::vector<int>& faces = k == 0 ? big : small;
+    const std::vector<double> from_first = reference_distances(mesh, faces.front());
+    double farthest = 0;
+    for (int f : faces) farthest = std::max(farthest, from_first[f]);
+    EXPECT_NEAR(from_first[both.faces()[k]], farthest, 1e-4) << "component " << k;
+    for (int f : faces)
+      for (int l = 0; l < both.count(); ++l)
+        if (part[both.faces()[l]] != part[f]) ASSERT_EQ(both.value(f, l), Landmarks::kUnreached);
+    const auto [tightness, far_pairs] = far_pair_tightness(mesh, both, faces, 11 + k);
+    EXPECT_GT(far_pairs, 20) << "component " << k;
+    EXPECT_GT(tightness, 0.5) << "component " << k;
+  }
+  both.set_target(&small[0], 1);
+  EXPECT_EQ(both.bound(big[0]), 0);
+  Landmarks one(mesh, centroids(mesh), 6, 10000);
+  ASSERT_EQ(one.count(), 6);
+  for (int f : one.faces()) EXPECT_EQ(part[f], large);
 }
 
 TEST(Landmarks, ATargetOfSeveralFacesIsBoundedByItsNearest) {

@@ -206,6 +206,27 @@ inline Arrays folded_body(int along, int around) {
   return tube(centre, radius, along, around, true);
 }
 
+// `specks` single triangles added apart from the mesh, at random places in its bounding box (each
+// 1% of the box's diagonal across): a scan's debris, its own components.
+inline Arrays with_debris(Arrays a, int specks, unsigned seed) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (int v = 0; v < a.vertices(); ++v) {
+    const Vec3 p(a.positions[3 * v], a.positions[3 * v + 1], a.positions[3 * v + 2]);
+    lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  }
+  const double size = 0.01 * (hi - lo).norm();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < specks; ++i) {
+    const Vec3 at = lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(hi - lo);
+    const int first = a.vertices();
+    for (const Vec3& p : {at, Vec3(at + Vec3(size, 0, 0)), Vec3(at + Vec3(0, size, 0))})
+      a.positions.insert(a.positions.end(), {p.x(), p.y(), p.z()});
+    a.triangles.insert(a.triangles.end(), {first, first + 1, first + 2});
+  }
+  return a;
+}
+
 // Every vertex moved along its area-weighted normal by uniform noise in +-amount mean edge lengths
 // (a scan-like surface from a smooth one).
 inline Arrays noisy(Arrays a, double amount, unsigned seed) {

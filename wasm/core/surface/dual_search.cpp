@@ -70,7 +70,7 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
     const auto& t = mesh.triangles[f];
     centroids_[f] = ((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3).cast<float>();
   }
-  if (nf >= options.landmark_min_faces) landmarks_ = Landmarks(mesh, centroids_, options.landmarks);
+  landmarks_ = Landmarks(mesh, centroids_, options.landmarks, options.landmark_min_faces);
 }
 
 size_t DualSearch::bytes() const {

@@ -25,7 +25,7 @@ struct ShortestPathOptions {
   // funnel path is shorter is straightened (0: never): the greedy search's strip depends on the end
   // it starts from, and the straightening's work grows with the region between strip and geodesic.
   int dual_reverse_search_faces = 512;
-  // Landmark lower bounds (landmarks.h) on meshes of at least landmark_min_faces faces: the A* term
+  // Landmark lower bounds (landmarks.h) in components of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
   // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
   // dual-graph distances overestimate the refined graph's (by up to a third on the coil of the
@@ -44,7 +44,8 @@ struct ShortestPathOptions {
   // the geodesic on grid-like meshes (dual shortest paths wander across a band of equal-length
   // staircases), giving longer paths.
   int landmarks = 8;                  // landmarks per mesh (2 bytes per face each); 0: none
-  int landmark_min_faces = 16384;     // smaller meshes search fast enough on the Euclidean term
+  int landmark_min_faces = 16384;     // smaller components get none: they search fast enough on the
+                                      // Euclidean term
   double landmark_weight = 2;         // kDual (as dual_heuristic_weight: a greedy search)
   double refined_landmark_scale = 0;  // kRefined
 };

@@ -33,36 +33,88 @@ void dual_distances(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& cen
 
 namespace {
 
-// The face farthest from the landmarks so far (an unreached one first).
-int farthest(const std::vector<float>& nearest) {
-  return static_cast<int>(std::max_element(nearest.begin(), nearest.end()) - nearest.begin());
+// The face with the largest value (the first such); with `finite`, the largest finite one.
+int farthest(const std::vector<float>& values, bool finite = false) {
+  int best = -1;
+  for (int f = 0; f < static_cast<int>(values.size()); ++f)
+    if ((!finite || std::isfinite(values[f])) && (best < 0 || values[f] > values[best])) best = f;
+  return std::max(best, 0);
+}
+
+// The connected components of the dual graph: each face's component, and the components' faces
+// (a face of each: its first; their sizes).
+struct Components {
+  std::vector<int> of;                // #F
+  std::vector<int> first_face, size;  // per component
+};
+
+Components components(const TriMesh& mesh) {
+  const int nf = static_cast<int>(mesh.triangles.size());
+  Components c;
+  c.of.assign(nf, -1);
+  std::vector<int> stack;
+  for (int s = 0; s < nf; ++s) {
+    if (c.of[s] >= 0) continue;
+    const int id = static_cast<int>(c.size.size());
+    c.first_face.push_back(s);
+    c.size.push_back(0);
+    c.of[s] = id;
+    stack.assign(1, s);
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      ++c.size[id];
+      for (int g : mesh.adjacency[f])
+        if (g >= 0 && c.of[g] < 0) c.of[g] = id, stack.push_back(g);
+    }
+  }
+  return c;
 }
 
 }  // namespace
 
-Landmarks::Landmarks(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& centroids, int count) {
+Landmarks::Landmarks(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& centroids, int count,
+                     int min_component_faces) {
   const int nf = static_cast<int>(mesh.triangles.size());
   if (count <= 0 || nf == 0) return;
+  // The components that get landmarks: the largest ones (at most `count`) of at least
+  // min_component_faces faces. A scan's debris (a real one: 150 specks beside a dragon of 871k
+  // faces) gets none; it would otherwise take every landmark, each farthest from all the others.
+  const Components parts = components(mesh);
+  std::vector<int> big;
+  for (int id = 0; id < static_cast<int>(parts.size.size()); ++id)
+    if (parts.size[id] >= std::max(1, min_component_faces)) big.push_back(id);
+  std::stable_sort(big.begin(), big.end(), [&](int x, int y) { return parts.size[x] > parts.size[y]; });
+  if (big.size() > static_cast<size_t>(count)) big.resize(count);
+  if (big.empty()) return;
   count_ = std::min(count, nf);
-  // The step from the first search: within face 0's component every distance is at most twice its
-  // largest (the diameter bound); values beyond 16 bits (other, larger components) count as unreached.
-  std::vector<float> distance, nearest(nf, std::numeric_limits<float>::infinity());
-  dual_distances(mesh, centroids, 0, distance);
+  // Each one's first landmark is the face farthest from its first face. Within a component every
+  // distance is at most twice that face's largest (the diameter bound): the step fits them all in
+  // 16 bits. `nearest`: per face of those components, the distance to the nearest landmark so far
+  // (infinity before its component has one); -1 elsewhere (never chosen).
+  std::vector<float> distance, nearest(nf, -1.f);
+  std::vector<int> firsts;
+  std::vector<char> chosen(parts.size.size(), 0);
   float eccentricity = 0;
-  for (float d : distance)
-    if (std::isfinite(d)) eccentricity = std::max(eccentricity, d);
+  for (int id : big) {
+    dual_distances(mesh, centroids, parts.first_face[id], distance);
+    firsts.push_back(farthest(distance, true));  // (the seed's own distance, 0, is finite)
+    eccentricity = std::max(eccentricity, distance[firsts.back()]);
+    chosen[id] = 1;
+  }
+  for (int f = 0; f < nf; ++f)
+    if (chosen[parts.of[f]]) nearest[f] = std::numeric_limits<float>::infinity();
   step_ = std::max(2.0 * eccentricity, 1e-30) / (kUnreached - 1);
-  int next = farthest(distance);
   values_.assign(static_cast<size_t>(nf) * count_, kUnreached);
   for (int l = 0; l < count_; ++l) {
+    const int next = l < static_cast<int>(firsts.size()) ? firsts[l] : farthest(nearest);
     faces_.push_back(next);
     dual_distances(mesh, centroids, next, distance);
     for (int f = 0; f < nf; ++f) {
       const double q = std::floor(distance[f] / step_);  // infinity stays infinite
       if (q < kUnreached) values_[static_cast<size_t>(f) * count_ + l] = static_cast<uint16_t>(q);
-      nearest[f] = std::min(nearest[f], distance[f]);
+      if (nearest[f] >= 0) nearest[f] = std::min(nearest[f], distance[f]);
     }
-    next = farthest(nearest);
   }
   lo_.assign(count_, kUnreached);
   hi_.assign(count_, 0);
