@@ -19,7 +19,7 @@ export const SCALE_MESHES = [
   { name: 'spot_loop2_369k', shared: 'spot_loop2_369k.ply' },
   { name: 'noisy spot_loop2_369k', shape: 'noisy', from: 'spot_loop2_369k.ply', what: 'spot_loop2_369k, vertices moved along their normals by ±0.3 mean edge lengths' },
   { name: 'coil', shape: 'coil', what: 'a tube coiled into 8 turns (helix radius 1, tube radius 0.12, pitch 0.3), 4000 × 48 quads split in two' },
-  { name: 'folded body', shape: 'folded', what: 'a body (radius 0.5) whose two limbs (radius 0.12) bend back and lie along it 0.04 away, 3000 × 64 quads and end caps' },
+  { name: 'folded body', shape: 'folded', what: 'a body (radius 0.5) whose two limbs (radius 0.12) bend back and lie along it 0.04 away, 3000 × 64 quads and end caps, with 150 specks of debris as a scan has (single triangles 0.2% of the diagonal across, scattered in its box; the Stanford dragon has 150 beside its body)' },
 ];
 
 const OLR = { scheme: 'olr', levels: 5 };

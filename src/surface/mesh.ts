@@ -40,7 +40,7 @@ export interface MeshInfo {
   components: number;
   /** Bytes of wasm memory the mesh structures hold (positions, faces, adjacency, search graph, landmark distances). */
   bytes: number;
-  /** Landmarks of the shortest-path search (see SurfaceMeshOptions.landmarks; 0 below 16,384 faces). */
+  /** Landmarks of the shortest-path search (see SurfaceMeshOptions.landmarks; 0 when no connected part has 16,384 faces). */
   landmarks: number;
   /** Milliseconds the core spent building the mesh and its search structures. */
   buildMs: MeshBuildTimes;
@@ -61,8 +61,9 @@ export interface SurfaceMeshOptions {
   /**
    * Landmark faces whose distances (2 bytes per face each) bound the shortest-path search from below
    * along the surface, so that searches on coiled or folded shapes follow the path instead of
-   * flooding the mesh; used on meshes of 16,384 faces or more. Default 8; 0 saves the memory and the
-   * precompute (about one dual-graph Dijkstra search per landmark).
+   * flooding the mesh; placed in the connected parts of 16,384 faces or more (the largest first; a
+   * scan's specks of debris get none). Default 8; 0 saves the memory and the precompute (about one
+   * dual-graph Dijkstra search per landmark).
    */
   landmarks?: number;
   /**

@@ -219,7 +219,8 @@ TEST(Landmarks, AScansSpecksOfDebrisGetNoneAndItsBodyGetsThemAll) {
   ASSERT_GT(far_pairs, 100);
   EXPECT_GT(tightness, 0.9);
   // A speck is out of every landmark's reach: it bounds nothing (and a search there ends at once).
-  const int speck = static_cast<int>(std::find_if(part.begin(), part.end(), [&](int p) { return p != body; }) - part.begin());
+  const int speck =
+      static_cast<int>(std::find_if(part.begin(), part.end(), [&](int p) { return p != body; }) - part.begin());
   landmarks.set_target(&body_faces[0], 1);
   EXPECT_EQ(landmarks.bound(speck), 0);
   // The solver's defaults place them so (a body of 25,600 faces is above landmark_min_faces).

@@ -207,14 +207,14 @@ inline Arrays folded_body(int along, int around) {
 }
 
 // `specks` single triangles added apart from the mesh, at random places in its bounding box (each
-// 1% of the box's diagonal across): a scan's debris, its own components.
-inline Arrays with_debris(Arrays a, int specks, unsigned seed) {
+// `size` of the box's diagonal across): a scan's debris, its own components.
+inline Arrays with_debris(Arrays a, int specks, unsigned seed, double size = 0.01) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (int v = 0; v < a.vertices(); ++v) {
     const Vec3 p(a.positions[3 * v], a.positions[3 * v + 1], a.positions[3 * v + 2]);
     lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   }
-  const double size = 0.01 * (hi - lo).norm();
+  size *= (hi - lo).norm();
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
   for (int i = 0; i < specks; ++i) {

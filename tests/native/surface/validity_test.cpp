@@ -187,12 +187,13 @@ TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
   constexpr int kPolygons = 10;
   Smoothness total[2];  // RDC, OLR adaptive
   // The shared meshes, then generated shapes where points close in space are far apart on the
-  // surface (issue 17; large enough for the search's landmarks) and a noisy scan-like one.
+  // surface (issue 17; large enough for the search's landmarks; the folded body with specks of
+  // debris beside it, as a scan has) and a noisy scan-like one.
   std::vector<std::pair<std::string, testing::Arrays>> inputs;
   for (const char* name : meshes)
     inputs.emplace_back(name, testing::read_mesh(testing::shared_data(std::string("meshes/") + name)));
   inputs.emplace_back("coil (8 turns)", testing::coil(800, 16));
-  inputs.emplace_back("folded body", testing::folded_body(600, 24));
+  inputs.emplace_back("folded body, debris", testing::with_debris(testing::folded_body(600, 24), 40, 3, 0.002));
   inputs.emplace_back("noisy spot",
                       testing::noisy(testing::read_mesh(testing::shared_data("meshes/spot.obj")), 0.3, 3));
   for (const auto& [name_string, arrays] : inputs) {

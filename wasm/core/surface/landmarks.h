@@ -11,8 +11,9 @@
 // the one SearchGraph::kDual searches: the bound is admissible there. Landmarks go to the largest
 // connected components (of at least a given size; a scan's specks of debris get none, as searches
 // there end at once): in each of them first the face farthest from its first face, then by
-// farthest-point sampling over them all (each the face farthest from those chosen so far). Distances are quantised to 16 bits per face and landmark (rounded down to a
-// multiple of `step`; 0xFFFF: not reached), the faces' values stored together.
+// farthest-point sampling over them all (each the face farthest from those chosen so far). Distances are quantised to
+// 16 bits per face and landmark (rounded down to a multiple of `step`; 0xFFFF: not reached), the faces' values stored
+// together.
 #pragma once
 
 #include "surface/mesh.h"
@@ -35,8 +36,7 @@ class Landmarks {
   // `count` landmarks on the dual graph of `mesh` whose face centroids are `centroids` (#F), in its
   // components of at least min_component_faces faces (the `count` largest); none when count <= 0 or
   // no component is that large.
-  Landmarks(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& centroids, int count,
-            int min_component_faces = 1);
+  Landmarks(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& centroids, int count, int min_component_faces = 1);
 
   // ---- Queries ----
   int count() const { return count_; }
