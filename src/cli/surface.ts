@@ -84,18 +84,48 @@ const traceUsage = `usage: splinekit trace <mesh> (--curves <curves.json> | --ra
 Traces cubic Bézier curves on the mesh by subdivision (b/Surf §3.5-§4): OLR (default, ${DEFAULT_TRACE_LEVELS.olr} levels)
 or RDC (${DEFAULT_TRACE_LEVELS.rdc} levels), uniform or adaptive with an angle threshold in degrees. curves.json:
 {"curves":[[p0,p1,p2,p3],...]} with points as in \`splinekit geodesic\`; --random N draws N
-curves with control points uniform over the surface's area (seed S, default 1). --json writes
+curves with control points uniform over the surface's area (seed S, default 1; on a mesh of
+several parts, a polygon whose points fall on separate parts is drawn again). A curve cannot
+cross between parts: given ones that would are refused. --json writes
 {"curves":[{"points":[{"face":f,"uv":[u,v],"xyz":[x,y,z]},...]}],"stats":{"total_ms":..,
 "per_curve_ms":[...],"per_curve":[{"searchedPaths":..,"seededPaths":..,"visitedNodes":..,
-"stripFaces":..,"passes":..,"flips":..},...]}}: the whole polyline on the surface, every edge crossing
-included; per_curve is each curve's work (shortest paths searched and straightened through known
-ones, graph nodes expanded, strip faces straightened, passes, flips).`;
+"stripFaces":..,"passes":..,"flips":..},...],"redrawn":n}}: the whole polyline on the surface, every
+edge crossing included; per_curve is each curve's work (shortest paths searched and straightened
+through known ones, graph nodes expanded, strip faces straightened, passes, flips); redrawn counts
+the random polygons drawn again.`;
 
 function integerOption(value: string | undefined, name: string, min: number, max: number): number | undefined {
   if (value === undefined) return undefined;
   const n = Number(value);
   if (!Number.isInteger(n) || n < min || n > max) throw new UsageError(`--${name} must be an integer from ${min} to ${max} (got "${value}")`);
   return n;
+}
+
+/**
+ * Traces `count` random curves (control points uniform over the surface's area, seed `seed`) with
+ * `add`. On a mesh of several parts (a scan's debris) a polygon whose points lie on separate parts
+ * cannot be traced: it is drawn again from the same stream (on a mesh of one part the polygons are
+ * the stream's first 4·count points). Returns how many were drawn again.
+ */
+function traceRandom(mesh: SurfaceMesh, count: number, seed: number, options: TraceOptions, add: (traced: ReturnType<typeof traceBezier>) => void): number {
+  let pool = randomMeshPoints(mesh, 4 * count, seed);
+  let next = 0, redrawn = 0;
+  for (let traced = 0; traced < count; ) {
+    if (next + 4 > pool.length) {
+      if (redrawn > 100 * count) throw new SplinekitError('invalid-input', `could not draw ${count} random curves whose control points lie on one connected part of the mesh (${redrawn} tried)`);
+      pool = randomMeshPoints(mesh, 2 * pool.length, seed); // (the same stream, longer)
+    }
+    const polygon = pool.slice(next, next + 4);
+    next += 4;
+    try {
+      add(traceBezier(mesh, polygon, options));
+      traced++;
+    } catch (err) {
+      if (!(err instanceof SplinekitError && err.message.includes('not connected'))) throw err;
+      redrawn++;
+    }
+  }
+  return redrawn;
 }
 
 export const trace: Command = {
@@ -136,34 +166,40 @@ export const trace: Command = {
     }
     const mesh = await loadMesh(positionals[0]);
     try {
-      let polygons: MeshPoint[][];
-      if (curvesJSON) {
-        polygons = curvesJSON.map((c: unknown, i: number) => {
-          if (!Array.isArray(c) || c.length !== 4) throw new SplinekitError('invalid-input', `${basename(values.curves!)}: curve ${i} must have 4 control points`);
-          return c.map((p, k) => meshPoint(mesh, p, `curve ${i} point ${k}`));
-        });
-      } else {
-        const points = randomMeshPoints(mesh, 4 * count!, seed);
-        polygons = Array.from({ length: count! }, (_, i) => points.slice(4 * i, 4 * i + 4));
-      }
       const perCurve: number[] = [];
       const work: Record<string, number>[] = [];
-      const curves = polygons.map((polygon) => {
-        const traced = traceBezier(mesh, polygon, options);
+      const curves: { points: { face: number; uv: [number, number]; xyz: number[] }[] }[] = [];
+      const add = (traced: ReturnType<typeof traceBezier>) => {
         perCurve.push(traced.ms);
         const { searchedPaths, seededPaths, visitedNodes, stripFaces, passes, flips } = traced.counters;
         work.push({ searchedPaths, seededPaths, visitedNodes, stripFaces, passes, flips });
-        return {
-          points: traced.points.map((p, i) => ({ face: p.face, uv: p.uv, xyz: [traced.xyz[3 * i], traced.xyz[3 * i + 1], traced.xyz[3 * i + 2]] })),
-        };
-      });
+        curves.push({ points: traced.points.map((p, i) => ({ face: p.face, uv: p.uv, xyz: [traced.xyz[3 * i], traced.xyz[3 * i + 1], traced.xyz[3 * i + 2]] })) });
+      };
+      let redrawn = 0;
+      if (curvesJSON) {
+        const polygons = curvesJSON.map((c: unknown, i: number) => {
+          if (!Array.isArray(c) || c.length !== 4) throw new SplinekitError('invalid-input', `${basename(values.curves!)}: curve ${i} must have 4 control points`);
+          return c.map((p, k) => meshPoint(mesh, p, `curve ${i} point ${k}`));
+        });
+        polygons.forEach((polygon, i) => {
+          try {
+            add(traceBezier(mesh, polygon, options));
+          } catch (err) {
+            if (err instanceof SplinekitError) throw new SplinekitError(err.code, `${basename(values.curves!)}: curve ${i}: ${err.message.replace(/^trace: curve 0: /, '')}`);
+            throw err;
+          }
+        });
+      } else {
+        redrawn = traceRandom(mesh, count!, seed, options, add);
+      }
       const total = perCurve.reduce((a, b) => a + b, 0);
-      if (values.json) writeJSON(values.json, { curves, stats: { total_ms: round(total), per_curve_ms: perCurve.map(round), per_curve: work } });
+      if (values.json) writeJSON(values.json, { curves, stats: { total_ms: round(total), per_curve_ms: perCurve.map(round), per_curve: work, redrawn } });
       else {
         const sorted = [...perCurve].sort((a, b) => a - b);
         console.log(
           `${basename(positionals[0])}: ${curves.length} curves (${scheme}, ${options.adaptive ? `adaptive ${options.adaptive}°` : `${options.levels ?? DEFAULT_TRACE_LEVELS[scheme]} levels`}), ` +
-            `${curves.reduce((n, c) => n + c.points.length, 0)} points, ${round(total)} ms (median ${round(sorted[sorted.length >> 1])} ms per curve)`,
+            `${curves.reduce((n, c) => n + c.points.length, 0)} points, ${round(total)} ms (median ${round(sorted[sorted.length >> 1])} ms per curve)` +
+            (redrawn ? `; ${redrawn} random polygons drawn again: their points lay on separate parts of the mesh` : ''),
         );
       }
     } finally {

@@ -46,7 +46,11 @@ export interface TracedCurve {
   xyz: Float64Array;
 }
 
-/** Traces one cubic Bézier curve given by 4 control points on the mesh. */
+/**
+ * Traces one cubic Bézier curve given by 4 control points on the mesh. Throws
+ * SplinekitError('invalid-input') when they lie on parts of the mesh that are not connected (a curve
+ * cannot cross between them).
+ */
 export function traceBezier(mesh: SurfaceMesh, controls: readonly MeshPointLike[], options?: TraceOptions): TracedCurve & {
   /** Time the core spent tracing, in milliseconds (measured inside wasm). */
   ms: number;

@@ -272,7 +272,7 @@ interface GeodesicJSON {
 }
 interface TraceJSON {
   curves: { points: { face: number; uv: [number, number]; xyz: Vec3 }[] }[];
-  stats: { total_ms: number; per_curve_ms: number[]; per_curve: { searchedPaths: number; seededPaths: number; visitedNodes: number; stripFaces: number; passes: number; flips: number }[] };
+  stats: { total_ms: number; per_curve_ms: number[]; per_curve: { searchedPaths: number; seededPaths: number; visitedNodes: number; stripFaces: number; passes: number; flips: number }[]; redrawn: number };
 }
 
 let runs = 0;
@@ -584,10 +584,38 @@ describe('splinekit trace', () => {
     expect(b.curves).toEqual(a.curves);
     expect(c.curves).toHaveLength(5);
     expect(c.curves).not.toEqual(a.curves);
+    expect(a.stats.redrawn).toBe(0); // (one part: the stream's first 20 points)
     for (const curve of a.curves) {
       const first = curve.points[0], last = curve.points.at(-1)!;
       checkTraced(mesh, [first, first, first, last], curve, 1e-9);
     }
+  });
+
+  test('on a mesh of two parts, --random draws each polygon on one part, and a given curve across them is refused', () => {
+    // The plane and a copy of it 5 units away: faces [0, F) and [F, 2F), vertices likewise.
+    const { positions, faces } = plane.mesh;
+    const V = positions.length, F = faces.length;
+    const two: Mesh = {
+      positions: [...positions, ...positions.map(([x, y, z]) => [x + 5, y, z] as Vec3)],
+      faces: [...faces, ...faces.map((f) => f.map((v) => v + V) as [number, number, number])],
+    };
+    const text = ['OFF', `${2 * V} ${2 * F} 0`, ...two.positions.map((p) => p.join(' ')), ...two.faces.map((f) => `3 ${f.join(' ')}`)].join('\n') + '\n';
+    const file = write('two-parts.off', text);
+    const json = run<TraceJSON>(['trace', file, '--random', '6', '--seed', '3']);
+    expect(json.curves).toHaveLength(6);
+    // Two parts of equal area: a polygon lands on one part with probability 1/8.
+    expect(json.stats.redrawn).toBeGreaterThan(0);
+    for (const curve of json.curves) {
+      const onFirst = curve.points[0].face < F;
+      expect(curve.points.every((p) => p.face < F === onFirst), 'every point of a curve on one part').toBe(true);
+      const first = curve.points[0], last = curve.points.at(-1)!;
+      checkTraced(two, [first, first, first, last], curve, 1e-9);
+    }
+    const across = write('across.json', { curves: [[0, 1, 2, 3], [0, 1, V + 2, V + 3]] });
+    const r = cli(['trace', file, '--curves', across]);
+    expect(r.code).toBe(1);
+    expect(r.stderr.trimEnd().split('\n')).toHaveLength(1);
+    expect(r.stderr).toMatch(/across\.json: curve 1: .*not connected/);
   });
 });
 

@@ -25,6 +25,11 @@ namespace {
 
 using namespace splinekit::surface;
 
+// What a curve whose control points lie on separate parts of the mesh is told (the tracer stands in
+// a path that stays put for each side it cannot find, so the polyline would not be the curve).
+constexpr const char* kApart =
+    "its control points lie on parts of the mesh that are not connected: a curve cannot cross between them";
+
 class SurfaceMeshHandle {
  public:
   void resizeMesh(int vertices, int faces) {
@@ -163,6 +168,7 @@ class SurfaceMeshHandle {
       const auto start = clock::now();
       tracer_->stats = {};
       tracer_->trace(polygons[c], options, scratch_);
+      if (tracer_->stats.unreachable_paths > 0) return fail("curve " + std::to_string(c) + ": " + kApart);
       curve_ms_[c] = elapsed(start);
       curve_counters_[c] = tracer_->stats;
       append(scratch_);
@@ -190,7 +196,9 @@ class SurfaceMeshHandle {
     ControlPolygon polygon;
     if (!set_options(scheme, levels, adaptive_degrees, options) || !polygon_input(polygon)) return kInvalidInput;
     if (!std::isfinite(t)) return fail("t must be a finite number");
+    tracer_->stats = {};
     scratch_.assign(1, tracer_->eval(polygon, t, options));
+    if (tracer_->stats.unreachable_paths > 0) return fail(kApart);
     output(scratch_);
     return kOk;
   }
@@ -202,7 +210,9 @@ class SurfaceMeshHandle {
     ControlPolygon polygon, left, right;
     if (!set_options(scheme, levels, adaptive_degrees, options) || !polygon_input(polygon)) return kInvalidInput;
     if (!(t > 0 && t < 1)) return fail("the split parameter must lie strictly between 0 and 1");
+    tracer_->stats = {};
     tracer_->split(polygon, t, options, left, right);
+    if (tracer_->stats.unreachable_paths > 0) return fail(kApart);
     scratch_.assign(left.begin(), left.end());
     scratch_.insert(scratch_.end(), right.begin() + 1, right.end());
     output(scratch_);

@@ -297,6 +297,49 @@ struct EuclideanTree {
 // than the flat B-spline polygon; at a joint the two handles are collinear). For the same reason the
 // core's extra test of the Bézier polygon's flatness never expands a node here, and the tree must be
 // the one computed from the B-spline polygons alone.
+// A curve cannot cross between parts of a mesh that are not connected: each side the solver cannot
+// find is counted (TraceStats::unreachable_paths, which the bindings turn into an error naming the
+// curve), in tracing, evaluating and splitting alike; curves on one part count none.
+TEST(SurfaceCurves, PathsBetweenSeparatePartsAreCounted) {
+  testing::Arrays a = testing::planar_grid(8), b = a;
+  const int offset = a.vertices();
+  for (size_t i = 0; i < b.positions.size(); i += 3) b.positions[i] += 5;
+  for (int& v : b.triangles) v += offset;
+  a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+  a.triangles.insert(a.triangles.end(), b.triangles.begin(), b.triangles.end());
+  const TriMesh mesh = testing::build(a);
+  GeodesicSolver solver(mesh);
+  CurveTracer tracer(solver);
+  const ControlPolygon one = {point_at(mesh, Vec3(0.1, 0.1, 0)), point_at(mesh, Vec3(0.9, 0.2, 0)),
+                              point_at(mesh, Vec3(0.2, 0.8, 0)), point_at(mesh, Vec3(0.9, 0.9, 0))};
+  ControlPolygon across = one;
+  across[2] = point_at(mesh, Vec3(5.5, 0.5, 0));
+  std::vector<MeshPoint> polyline;
+  ControlPolygon left, right;
+  for (Scheme scheme : {Scheme::kOLR, Scheme::kRDC}) {
+    TraceOptions options;
+    options.scheme = scheme;
+    tracer.stats = {};
+    tracer.trace(one, options, polyline);
+    tracer.eval(one, 0.3, options);
+    tracer.split(one, 0.3, options, left, right);
+    EXPECT_EQ(tracer.stats.unreachable_paths, 0);
+    EXPECT_GT(tracer.stats.shortest_paths, 0);
+    tracer.stats = {};
+    tracer.trace(across, options, polyline);
+    // P1 -> P2 and P2 -> P3 at least (then every path from a point on one part to one on the other).
+    EXPECT_GE(tracer.stats.unreachable_paths, 2);
+    for (int k = 0; k < 2; ++k) {
+      tracer.stats = {};
+      if (k == 0)
+        tracer.eval(across, 0.3, options);
+      else
+        tracer.split(across, 0.3, options, left, right);
+      EXPECT_GE(tracer.stats.unreachable_paths, 2) << (k ? "split" : "eval");
+    }
+  }
+}
+
 TEST(SurfaceCurves, OlrAdaptiveEmitsTheLeavesBezierPolygonsOnAPlane) {
   Plane plane;
   GeodesicSolver solver(plane.mesh);

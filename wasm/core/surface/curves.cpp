@@ -69,7 +69,9 @@ GeodesicPath CurveTracer::path(const MeshPoint& a, const MeshPoint& b) {
   GeodesicPath p;
   ++stats.shortest_paths;
   if (!solver_.shortest_path(a, b, p, &stats.paths, search_)) {
-    // Unreachable (another component): a degenerate path that stays at a.
+    // Unreachable (another component): a degenerate path that stays at a (counted: the caller
+    // tells the user the curve cannot be traced).
+    ++stats.unreachable_paths;
     p = GeodesicPath{a, a, {a.face}, {}, {}};
   }
   return p;

@@ -41,9 +41,11 @@ struct TraceOptions {
 using ControlPolygon = std::array<MeshPoint, 4>;
 
 struct TraceStats {
-  int shortest_paths = 0;  // searched (phase (i) on the graph)
-  int seeded_paths = 0;    // straightened through known paths instead
-  PathStats paths;         // the counters of all of them (search, strips, passes, flips)
+  int shortest_paths = 0;     // searched (phase (i) on the graph)
+  int seeded_paths = 0;       // straightened through known paths instead
+  int unreachable_paths = 0;  // between points on parts of the mesh that are not connected (a
+                              // path that stays at its start stands in: the curve is not whole)
+  PathStats paths;            // the counters of all of them (search, strips, passes, flips)
 };
 
 class CurveTracer {
