@@ -293,7 +293,17 @@ landmarks instead of 8 expand 18% fewer nodes on the dragon and change no mesh's
 worth their 16 more bytes per triangle); the reverse search of long sides costs the dragon 5-10% (its searches
 expand more nodes per strip face than the coil's) and is kept for the coil's and the folded body's 10-14%. On a
 marching-cubes gyroid (2 periods, 306,728 triangles, 7 components, slivers), random curves: median 4.57 ms, p90
-7.4, p99 14.8.`;
+7.4, p99 14.8.
+
+Measured and dropped the same day (native, build/exp harnesses): when a pass's flips together do not shorten the
+path (16% of the passes of 30 dragon sides), its zippers and chords are what failed (of the flips that did not
+shorten alone, 554 of 561 on the dragon, 312 of 327 on the coil); trying the same vertices again as plain
+semi-stars before the largest turn alone took 13% fewer passes on the dragon and 1.5-4% on the coil and the folded
+body, but only 1.7-6.9% fewer instructions in the straightening (callgrind), a few percent of a curve. Vertex
+landmarks for the refined search (vertex-graph distances, linear per face, divided by their steepest gradient so
+that they bound the surface distance from below and keep the search exact): the gradient is 1.42 on the coil's
+split quads (the bound recovers 70% and saves 20% of the nodes) and 108-220 on the dragon's slivers (it recovers
+nothing).`;
 
 const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
 const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
