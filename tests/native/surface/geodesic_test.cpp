@@ -270,6 +270,42 @@ TEST(ShortestPath, IsTheStraightSegmentOnAPlane) {
   }
 }
 
+// A scan in georeferenced coordinates lies millions of units from the origin while it is a few units
+// across: the search's single-precision positions are taken relative to the mesh's centre, so the
+// paths are those of the same mesh at the origin (before, on spot moved to (5e5, 4e6, 100), float
+// positions were 0.25-0.5 apart: strips wandered, and of these 40 pairs paths came out up to 8.5%
+// longer and searches 118%).
+TEST(ShortestPath, AMeshFarFromTheOriginHasTheSamePaths) {
+  const testing::Arrays near = testing::read_mesh(testing::shared_data("meshes/spot.obj"));
+  testing::Arrays far = near;
+  const double shift[3] = {5e5, 4e6, 100};
+  for (size_t i = 0; i < far.positions.size(); ++i) far.positions[i] += shift[i % 3];
+  const TriMesh a = testing::build(near), b = testing::build(far);
+  ShortestPathOptions options;
+  options.landmark_min_faces = 0;  // (spot has 5,856 faces: its landmarks too)
+  GeodesicSolver at_origin(a, options), away(b, options);
+  ASSERT_EQ(at_origin.landmarks().count(), 8);
+  std::mt19937 rng(7);
+  double worst_path = 0, worst_search = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const MeshPoint p = random_point(a, rng), q = random_point(a, rng);
+    for (SearchGraph graph : {SearchGraph::kRefined, SearchGraph::kDual}) {
+      GeodesicPath x, y;
+      ASSERT_TRUE(at_origin.shortest_path(p, q, x, nullptr, graph));
+      ASSERT_TRUE(away.shortest_path(p, q, y, nullptr, graph));
+      // (Up to single-precision rounding: the centres differ in their last bits, and a greedy
+      // search's near-ties may go either way.)
+      const double length = path_length(a, x);
+      worst_path = std::max(worst_path, std::abs(path_length(b, y) - length) / length);
+      worst_search =
+          std::max(worst_search, std::abs(at_origin.last_search_length() - away.last_search_length()) / length);
+    }
+  }
+  std::printf("  worst relative difference: paths %.2g, searches %.2g\n", worst_path, worst_search);
+  EXPECT_LT(worst_path, 1e-5);
+  EXPECT_LT(worst_search, 5e-3);
+}
+
 // A path straightened through two known paths that meet at a corner c (a mesh vertex half of the
 // time, so the strip must go around it) is the straight segment, like the searched one; and on the
 // cube the corner between two faces' centres straightens to the unfolded diagonal.

@@ -65,10 +65,15 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
   }
   face_slot_.assign(nf, -1);
   edge_slot_.assign(graph_.edges, -1);
+  if (!mesh.positions.empty()) {
+    Vec3 lo = mesh.positions[0], hi = lo;
+    for (const Vec3& p : mesh.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    origin_ = (lo + hi) / 2;
+  }
   centroids_.resize(nf);
   for (int f = 0; f < nf; ++f) {
     const auto& t = mesh.triangles[f];
-    centroids_[f] = ((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3).cast<float>();
+    centroids_[f] = local((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3);
   }
   landmarks_ = Landmarks(mesh, centroids_, options.landmarks, options.landmark_min_faces);
 }
@@ -82,7 +87,8 @@ size_t DualSearch::bytes() const {
          centroids_.capacity() * sizeof(centroids_[0]) + landmarks_.bytes();
 }
 
-// Position of graph node `node` (on edge e, -1 for a face node): a face centroid, or a point along an edge.
+// Position of graph node `node` (on edge e, -1 for a face node), relative to origin_: a face centroid,
+// or a point along an edge.
 Vec3 DualSearch::node_position(int node, int e) const {
   if (node < graph_.faces) return centroids_[node].cast<double>();
   const auto [first, end] = graph_.node_range(e);
@@ -90,7 +96,7 @@ Vec3 DualSearch::node_position(int node, int e) const {
   const int h = graph_.edge_halfedge[e];
   const auto& t = mesh_.triangles[h / 3];
   const double s = double(node - first + 1) / (count + 1);
-  return (1 - s) * mesh_.positions[t[h % 3]] + s * mesh_.positions[t[(h % 3 + 1) % 3]];
+  return (1 - s) * (mesh_.positions[t[h % 3]] - origin_) + s * (mesh_.positions[t[(h % 3 + 1) % 3]] - origin_);
 }
 
 float DualSearch::edge_length(int e) const {
@@ -148,16 +154,18 @@ struct Window {
   bool valid = false;
   // The window of node record `v` on the edge of half-edge h (3g + k), going on into face f; none
   // (distance() infinite) when `use` is false.
-  Window(const TriMesh& mesh, int h, int f, const DualSearch::Visit& v, bool use) {
+  // (Positions relative to `origin`, as the search's.)
+  Window(const TriMesh& mesh, const Vec3& origin, int h, int f, const DualSearch::Visit& v, bool use) {
     if (!use) return;
     const auto& t = mesh.triangles[h / 3];
-    a = mesh.positions[t[h % 3]].cast<float>();
-    x = mesh.positions[t[(h % 3 + 1) % 3]].cast<float>() - a;
+    const Vec3& pa = mesh.positions[t[h % 3]];
+    a = (pa - origin).cast<float>();
+    x = (mesh.positions[t[(h % 3 + 1) % 3]] - pa).cast<float>();
     length = x.norm();
     const auto& tf = mesh.triangles[f];
     int c = 0;
     while (c < 2 && (tf[c] == t[h % 3] || tf[c] == t[(h % 3 + 1) % 3])) ++c;
-    const Eigen::Vector3f ac = mesh.positions[tf[c]].cast<float>() - a;
+    const Eigen::Vector3f ac = (mesh.positions[tf[c]] - pa).cast<float>();
     if (!(length > 0)) return;
     x /= length;
     y = ac - ac.dot(x) * x;
@@ -193,12 +201,12 @@ struct Window {
   }
   // Node record v, on the edge of half-edge h of f, just reached through this window: its
   // pseudo-source (σ laid in f's plane), distance and stretch (the cone's trace on its edge).
-  void pass_on(const TriMesh& mesh, int h, DualSearch::Visit& v) const {
+  void pass_on(const TriMesh& mesh, const Vec3& origin, int h, DualSearch::Visit& v) const {
     v.source = a + xs * x + ys * y;
     v.source_dist = dist;
     const auto& t = mesh.triangles[h / 3];
-    const Eigen::Vector3f q0 = mesh.positions[t[h % 3]].cast<float>() - a,
-                          q1 = mesh.positions[t[(h % 3 + 1) % 3]].cast<float>() - a;
+    const Eigen::Vector3f q0 = (mesh.positions[t[h % 3]] - origin).cast<float>() - a,
+                          q1 = (mesh.positions[t[(h % 3 + 1) % 3]] - origin).cast<float>() - a;
     const float x0 = q0.dot(x), y0 = std::max(0.f, q0.dot(y)), x1 = q1.dot(x), y1 = std::max(0.f, q1.dot(y));
     const float length = (q1 - q0).norm();
     if (!(ys < 0)) {  // σ on e: it sees all of f
@@ -251,8 +259,9 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
       return true;
     }
   }
-  const Vec3 pa = eval_position(mesh_, a);
-  const Vec3 pb = eval_position(mesh_, b);
+  // (Relative to origin_, as the nodes' positions.)
+  const Vec3 pa = eval_position(mesh_, a) - origin_;
+  const Vec3 pb = eval_position(mesh_, b) - origin_;
   const Eigen::Vector3f pbf = pb.cast<float>();
   const double weight = dual ? dual_heuristic_weight_ : 1.0;
   // The landmark term (landmarks.h): admissible on the dual graph; scaled down on the refined one.
@@ -378,7 +387,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
         if (f < 0) continue;
         // On into f: straight from u's pseudo-source where it sees through u's window, else from u.
         const Visit& vu = visits_[r];
-        const Window window(mesh_, graph_.edge_halfedge[e], f, vu, f != vu.via && vu.via >= 0);
+        const Window window(mesh_, origin_, graph_.edge_halfedge[e], f, vu, f != vu.via && vu.via >= 0);
         if (is_target(f)) {
           int end;
           const float total = std::min({du + (pu - pbf).norm(), window.distance(pbf), window.around(pbf, end)});
@@ -403,7 +412,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
             v.parent = u;
             v.via = f;
             if (straight <= d) {
-              window.pass_on(mesh_, graph_.edge_halfedge[other], v);
+              window.pass_on(mesh_, origin_, graph_.edge_halfedge[other], v);
             } else if (bend <= d) {  // round A or B, which sees the whole of the other edges of f
               v.source = end == 0 ? window.a : Eigen::Vector3f(window.a + window.length * window.x);
               v.source_dist = end == 0 ? window.to_a : window.to_b, v.lo = 0, v.hi = other_length;

@@ -118,7 +118,7 @@ class DualSearch {
   };
 
  private:
-  Vec3 node_position(int node, int edge) const;
+  Vec3 node_position(int node, int edge) const;  // (relative to origin_)
   float edge_length(int e) const;
   int link_face(int a, int b) const;  // a face holding both nodes
   // The record of `node` (on edge `edge`, -1 for a face node); -1 when untouched.
@@ -144,7 +144,14 @@ class DualSearch {
   RadixQueue queue_;
   std::vector<int> sources_, targets_;  // faces holding a and b
   double last_length_ = 0;
-  // Face centroids in single precision (the face nodes' positions: one read instead of four).
+  // The search's positions (node records, windows, centroids) are in single precision relative to
+  // `origin_`, the centre of the mesh's bounding box: a float keeps 7 digits of a coordinate, which
+  // for a scan in georeferenced coordinates (millions of units away, a few units across) are not its
+  // shape's. local(): a point of mesh space in those coordinates.
+  Vec3 origin_ = Vec3::Zero();
+  Eigen::Vector3f local(const Vec3& p) const { return (p - origin_).cast<float>(); }
+  // Face centroids in single precision, relative to origin_ (the face nodes' positions: one read
+  // instead of four).
   std::vector<Eigen::Vector3f> centroids_;
   // Dual-graph distances from a few landmark faces (empty on small meshes).
   Landmarks landmarks_;
