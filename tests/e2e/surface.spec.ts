@@ -490,3 +490,52 @@ test('Surface mode: a mesh too large to draw in a frame shows a stand-in, then a
   });
   expect(curve + selected, 'pixels of the curve over the mesh').toBeGreaterThan(100);
 });
+
+/** A torus (radii 1 and 0.35, n × n quads split in two) about `centre`, as OBJ text (double precision). */
+function torusOBJ(n: number, centre: [number, number, number]): string {
+  const lines: string[] = [];
+  for (let i = 0; i < n; i++)
+    for (let j = 0; j < n; j++) {
+      const u = (2 * Math.PI * i) / n, v = (2 * Math.PI * j) / n;
+      const p = [(1 + 0.35 * Math.cos(v)) * Math.cos(u), (1 + 0.35 * Math.cos(v)) * Math.sin(u), 0.35 * Math.sin(v)];
+      lines.push(`v ${(centre[0] + p[0]).toFixed(9)} ${(centre[1] + p[1]).toFixed(9)} ${(centre[2] + p[2]).toFixed(9)}`);
+    }
+  const id = (i: number, j: number) => (i % n) * n + (j % n) + 1;
+  for (let i = 0; i < n; i++)
+    for (let j = 0; j < n; j++) lines.push(`f ${id(i, j)} ${id(i + 1, j)} ${id(i + 1, j + 1)}`, `f ${id(i, j)} ${id(i + 1, j + 1)} ${id(i, j + 1)}`);
+  return lines.join('\n') + '\n';
+}
+
+test('Surface mode: a scan in georeferenced coordinates is shown, picked and traced on like the same mesh at the origin', async ({ page }) => {
+  await openSurface(page);
+  // Far away, the file's coordinates are 0.25-0.5 apart in single precision: shown as they were, the
+  // torus came out blocky and clicks picked the wrong faces.
+  const grids: { rgb: number[]; hit: boolean }[][] = [];
+  for (const [name, centre] of [
+    ['torus.obj', [0, 0, 0]],
+    ['georeferenced-torus.obj', [500000, 4000000, 100]],
+  ] as [string, [number, number, number]][]) {
+    await page.getByTestId('surface-mesh-input').setInputFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(torusOBJ(64, centre)) });
+    await page.waitForFunction((f) => {
+      const s = window.splinekitEditor!.surface.state();
+      return s.file === f && s.meshReady;
+    }, name);
+    await settled(page);
+    grids.push(await canvasGrid(page, 40, 25));
+  }
+  const [near, far] = grids;
+  expect(near.filter((g) => g.hit).length, 'grid points on the torus').toBeGreaterThan(150);
+  // The same picture and the same picking, point for point (silhouette pixels aside).
+  expect(far.filter((g, i) => g.hit !== near[i].hit).length, 'grid points picked in one and not the other').toBeLessThanOrEqual(3);
+  const background = [0x1b, 0x1d, 0x21];
+  const isBackground = (rgb: number[]) => rgb.every((c, k) => Math.abs(c - background[k]) <= 3);
+  expect(far.filter((g) => g.hit === isBackground(g.rgb)).length, 'grid points where picture and picking disagree').toBeLessThanOrEqual(3);
+  // A spline drawn on it traces on its faces and is drawn over it.
+  const s = await drawSpline(page, [
+    [0.3, 0.5],
+    [0.45, 0.3],
+    [0.7, 0.5],
+  ]);
+  expect(s.splines).toHaveLength(1);
+  await expectOnMesh(page, s.splines[0], s.scale!);
+});

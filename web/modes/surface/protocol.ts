@@ -25,7 +25,7 @@ export type SplineOp =
 
 /** A traced polyline on the mesh. */
 export interface TracedPolyline {
-  /** Points on the surface, x y z. */
+  /** Points on the surface, x y z in the view's coordinates (the mesh's but for displayOrigin). */
   xyz: Float64Array;
   /** The same points lifted a little along the surface normal, for drawing. */
   lifted: Float32Array;
@@ -79,6 +79,7 @@ export type SurfaceReply =
       stage: 'shown';
       /** Without the search structures (bytes, landmarks: see 'loaded'). */
       info: MeshInfo;
+      /** In the view's coordinates: the mesh's, less displayOrigin (web/view3d/bounds.ts). */
       positions: Float32Array;
       triangles: Uint32Array;
       /** Smooth vertex normals (area weighted). */

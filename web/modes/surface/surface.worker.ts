@@ -7,7 +7,7 @@
 import { SurfaceMesh, SurfaceSpline, init, mapSplines, meshPointNormal, parseSVG, vertexNormals, type MeshPoint, type SurfaceSplineJSON } from '../../../src/index.js';
 import { serveRequests } from '../../app/worker-host.js';
 import { TriangleBVH, type BVHArrays } from '../../view3d/bvh.js';
-import { meshBounds } from '../../view3d/bounds.js';
+import { displayOrigin, meshBounds, toDisplay } from '../../view3d/bounds.js';
 import { meshProxy } from '../../view3d/proxy.js';
 import type { PolygonPaths, SplineOp, SurfaceReply, SurfaceRequest, TracedPolyline } from './protocol.js';
 
@@ -22,6 +22,8 @@ let mesh: SurfaceMesh | null = null;
 /** Smooth vertex normals of `mesh` (area weighted), for lifting polylines. */
 let normals: Float32Array | null = null;
 let lift = 0;
+/** Where the view's coordinates start (displayOrigin): every position posted is relative to it. */
+let origin: [number, number, number] = [0, 0, 0];
 const ready = init();
 
 const post = serveRequests<SurfaceRequest, SurfaceReply>(handle);
@@ -66,7 +68,8 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   const P = next.positions, T = next.triangles;
   normals = vertexNormals(P, T);
   lift = LIFT * next.scale;
-  const positions = Float32Array.from(P), triangles = new Uint32Array(T.length);
+  origin = displayOrigin(P);
+  const positions = toDisplay(P, origin), triangles = new Uint32Array(T.length);
   triangles.set(T);
   const later = T.length / 3 > PICKING_LATER_FACES;
   const bvhArrays = (bvh: BVHArrays) => [bvh.bounds.buffer, bvh.nodes.buffer, bvh.order.buffer];
@@ -126,7 +129,8 @@ function run(req: Extract<SurfaceRequest, { type: 'run' }>): void {
       // The core's own time for the curves (what the paper reports), else the call's.
       traceMs = typeof r.ms === 'number' && r.ms > 0 ? r.ms : performance.now() - t1;
       const where = flatPoints(r.points);
-      trace = { xyz: Float64Array.from(r.xyz), lifted: liftPoints(m, r.points, r.xyz), where, segmentStarts: Int32Array.from(r.segmentStarts) };
+      const xyz = Float64Array.from(r.xyz, (x, i) => x - origin[i % 3]); // (the view's coordinates)
+      trace = { xyz, lifted: liftPoints(m, r.points, r.xyz), where, segmentStarts: Int32Array.from(r.segmentStarts) };
       transfer.push(trace.xyz.buffer, trace.lifted.buffer, trace.where.buffer, trace.segmentStarts.buffer);
     }
     let polygon: PolygonPaths | null = null;
@@ -234,17 +238,17 @@ function flatPoints(points: readonly MeshPoint[]): Float64Array {
   return out;
 }
 
-/** xyz + lift × the interpolated smooth normal at each mesh point. */
+/** xyz + lift × the interpolated smooth normal at each mesh point, in the view's coordinates. */
 function liftPoints(m: SurfaceMesh, points: readonly MeshPoint[], xyz: ArrayLike<number>): Float32Array {
-  if (lift === 0) return Float32Array.from(xyz);
+  if (lift === 0) return toDisplay(xyz, origin);
   const T = m.triangles, N = normals!;
   const out = new Float32Array(3 * points.length);
   const n: [number, number, number] = [0, 0, 0];
   for (let i = 0; i < points.length; i++) {
     meshPointNormal(N, T, points[i], n);
-    out[3 * i] = xyz[3 * i] + lift * n[0];
-    out[3 * i + 1] = xyz[3 * i + 1] + lift * n[1];
-    out[3 * i + 2] = xyz[3 * i + 2] + lift * n[2];
+    out[3 * i] = xyz[3 * i] - origin[0] + lift * n[0];
+    out[3 * i + 1] = xyz[3 * i + 1] - origin[1] + lift * n[1];
+    out[3 * i + 2] = xyz[3 * i + 2] - origin[2] + lift * n[2];
   }
   return out;
 }
