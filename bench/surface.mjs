@@ -504,7 +504,10 @@ was set; the header says what each option does).
   that are exact (MMP from the same 8 landmark faces, an oracle, 2026-12-03) cut the coil's refined
   searches only from 7.1M to 2.2M nodes (20 pairs, 2348 -> 871 ms natively): from far along a thin tube
   every landmark sees how far a node is along the tube, not where it lies around it, so the search
-  still takes in the tube's whole girth between the ends.
+  still takes in the tube's whole girth between the ends. landmark_min_faces counts a component's
+  faces, not the mesh's (2026-12-03): landmarks go to the largest components of at least that many
+  faces, so that a scan's specks of debris (the Stanford dragon's 150) do not take them all (section
+  "Surface at scale", "Scans with debris").
 - **chord_min_turn = 0.01 rad** (phase (iii)). Late in the straightening the path bends a little at
   apices far apart, and a chord there walks all the way between the neighbouring apices for a small
   gain; smaller bends get the semi-star (and zipper) flip. On random whole-surface curves (OLR, 5
