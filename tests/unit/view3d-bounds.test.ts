@@ -2,7 +2,9 @@
 // coordinates; one far from it for its size (a scan in georeferenced coordinates) relative to its
 // centre, so that single precision keeps its shape.
 import { expect, test } from 'vitest';
-import { displayOrigin, toDisplay } from '../../web/view3d/bounds.js';
+import { displayOrigin as originOfBox, meshBounds, toDisplay } from '../../web/view3d/bounds.js';
+
+const displayOrigin = (P: ArrayLike<number>) => originOfBox(meshBounds(P).box);
 
 /** A sphere of radius r about c, as a point cloud (latitude × longitude). */
 function sphere(c: [number, number, number], r: number, n = 24): Float64Array {

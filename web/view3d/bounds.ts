@@ -31,24 +31,23 @@ export function meshBounds(positions: ArrayLike<number>): MeshBounds {
 }
 
 /**
- * Where the view's single-precision coordinates start: the centre of the positions' bounding box
- * when the mesh lies farther from the origin than 16 times its size (a scan in georeferenced
- * coordinates, millions of units away and a few units across, which a float's 24 bits would round
- * to a blocky shape and a picking hierarchy to the wrong faces); else the origin itself, so that
- * the coordinates shown are the file's.
+ * Where the view's single-precision coordinates start, from the positions' bounding box (meshBounds):
+ * its centre when the mesh lies farther from the origin than 16 times its size (a scan in
+ * georeferenced coordinates, millions of units away and a few units across, which a float's 24 bits
+ * would round to a blocky shape and a picking hierarchy to the wrong faces); else the origin itself,
+ * so that the coordinates shown are the file's.
  */
-export function displayOrigin(positions: ArrayLike<number>): [number, number, number] {
-  const P = positions;
-  if (P.length < 3) return [0, 0, 0];
-  const lo = [P[0], P[1], P[2]], hi = [P[0], P[1], P[2]];
-  for (let i = 3; i + 2 < P.length; i += 3)
-    for (let k = 0; k < 3; k++) {
-      lo[k] = Math.min(lo[k], P[i + k]);
-      hi[k] = Math.max(hi[k], P[i + k]);
-    }
-  const centre: [number, number, number] = [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2];
-  const size = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-  return Math.max(...centre.map(Math.abs)) > 16 * size ? centre : [0, 0, 0];
+export function displayOrigin(box: MeshBounds['box']): [number, number, number] {
+  const [x0, y0, z0, x1, y1, z1] = box;
+  const centre: [number, number, number] = [(x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2];
+  const size = Math.hypot(x1 - x0, y1 - y0, z1 - z0);
+  return Number.isFinite(size) && Math.max(...centre.map(Math.abs)) > 16 * size ? centre : [0, 0, 0];
+}
+
+/** The same bounds in the view's coordinates (less `origin`; the radius is the same). */
+export function shiftBounds(bounds: MeshBounds, origin: readonly [number, number, number]): MeshBounds {
+  const [x0, y0, z0, x1, y1, z1] = bounds.box, [ox, oy, oz] = origin;
+  return { box: [x0 - ox, y0 - oy, z0 - oz, x1 - ox, y1 - oy, z1 - oz], radius: bounds.radius };
 }
 
 /** xyz − origin in single precision (the view's coordinates; see displayOrigin). */

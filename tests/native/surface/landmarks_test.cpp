@@ -136,23 +136,6 @@ const TriMesh& small_coil() {
   return mesh;
 }
 
-// The connected components of the dual graph (faces sharing an edge), by a search of its own.
-std::vector<int> component_of(const TriMesh& mesh) {
-  std::vector<int> part(mesh.triangles.size(), -1), stack;
-  int parts = 0;
-  for (int s = 0; s < static_cast<int>(part.size()); ++s) {
-    if (part[s] >= 0) continue;
-    for (part[s] = parts, stack.assign(1, s); !stack.empty();) {
-      const int f = stack.back();
-      stack.pop_back();
-      for (int g : mesh.adjacency[f])
-        if (g >= 0 && part[g] < 0) part[g] = parts, stack.push_back(g);
-    }
-    ++parts;
-  }
-  return part;
-}
-
 // For 20 random targets among `faces` and 200 random faces among them each: the bound never exceeds
 // the dual distance (asserted), and over the pairs on different turns of a coil (the surface
 // distance far beyond the Euclidean one), the mean share of the distance the bound recovers, and
@@ -206,7 +189,7 @@ TEST(Landmarks, BoundNeverExceedsTheDualDistanceAndFollowsTheCoil) {
 // term: on that dragon 7 times the nodes.
 TEST(Landmarks, AScansSpecksOfDebrisGetNoneAndItsBodyGetsThemAll) {
   const TriMesh mesh = testing::build(testing::with_debris(testing::coil(800, 16), 40, 3));
-  const std::vector<int> part = component_of(mesh);
+  const std::vector<int> part = testing::face_components(mesh);
   const int body = part[std::max_element(mesh.triangles.begin(), mesh.triangles.end()) - mesh.triangles.begin()];
   const std::vector<int> body_faces = faces_of(part, body);
   ASSERT_EQ(body_faces.size(), 25600u);
@@ -240,7 +223,7 @@ TEST(Landmarks, EveryLargeComponentGetsItsOwn) {
   a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
   a.triangles.insert(a.triangles.end(), b.triangles.begin(), b.triangles.end());
   const TriMesh mesh = testing::build(a);
-  const std::vector<int> part = component_of(mesh);
+  const std::vector<int> part = testing::face_components(mesh);
   ASSERT_EQ(*std::max_element(part.begin(), part.end()), 1);
   const int large = faces_of(part, 0).size() > faces_of(part, 1).size() ? 0 : 1;
   const std::vector<int> big = faces_of(part, large), small = faces_of(part, 1 - large);

@@ -206,6 +206,24 @@ inline Arrays folded_body(int along, int around) {
   return tube(centre, radius, along, around, true);
 }
 
+// The connected components of a built mesh's faces (faces sharing an edge): each face's component,
+// numbered in the order of their first faces.
+inline std::vector<int> face_components(const TriMesh& mesh) {
+  std::vector<int> part(mesh.triangles.size(), -1), stack;
+  int parts = 0;
+  for (int s = 0; s < static_cast<int>(part.size()); ++s) {
+    if (part[s] >= 0) continue;
+    for (part[s] = parts, stack.assign(1, s); !stack.empty();) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int g : mesh.adjacency[f])
+        if (g >= 0 && part[g] < 0) part[g] = parts, stack.push_back(g);
+    }
+    ++parts;
+  }
+  return part;
+}
+
 // `specks` single triangles added apart from the mesh, at random places in its bounding box (each
 // `size` of the box's diagonal across): a scan's debris, its own components.
 inline Arrays with_debris(Arrays a, int specks, unsigned seed, double size = 0.01) {

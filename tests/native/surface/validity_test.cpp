@@ -39,18 +39,13 @@ Vec3 pos(const TriMesh& mesh, const MeshPoint& p) { return eval_position(mesh, p
 // Faces of the largest connected component (tracing between components is not defined: the path
 // between them is empty by contract).
 std::vector<int> largest_component(const TriMesh& mesh) {
-  const int F = static_cast<int>(mesh.triangles.size());
-  std::vector<int> label(F, -1), best;
-  for (int s = 0; s < F; ++s) {
-    if (label[s] >= 0) continue;
-    std::vector<int> faces = {s};
-    label[s] = s;
-    for (size_t i = 0; i < faces.size(); ++i)
-      for (int g : mesh.adjacency[faces[i]])
-        if (g >= 0 && label[g] < 0) label[g] = s, faces.push_back(g);
-    if (faces.size() > best.size()) best.swap(faces);
-  }
-  return best;
+  const std::vector<int> part = testing::face_components(mesh);
+  std::vector<int> size(*std::max_element(part.begin(), part.end()) + 1, 0), faces;
+  for (int p : part) ++size[p];
+  const int largest = static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
+  for (int f = 0; f < static_cast<int>(part.size()); ++f)
+    if (part[f] == largest) faces.push_back(f);
+  return faces;
 }
 
 ControlPolygon random_polygon(const std::vector<int>& faces, std::mt19937& rng) {

@@ -7,7 +7,7 @@
 import { SurfaceMesh, SurfaceSpline, init, mapSplines, meshPointNormal, parseSVG, vertexNormals, type MeshPoint, type SurfaceSplineJSON } from '../../../src/index.js';
 import { serveRequests } from '../../app/worker-host.js';
 import { TriangleBVH, type BVHArrays } from '../../view3d/bvh.js';
-import { displayOrigin, meshBounds, toDisplay } from '../../view3d/bounds.js';
+import { displayOrigin, meshBounds, shiftBounds, toDisplay } from '../../view3d/bounds.js';
 import { meshProxy } from '../../view3d/proxy.js';
 import type { PolygonPaths, SplineOp, SurfaceReply, SurfaceRequest, TracedPolyline } from './protocol.js';
 
@@ -68,7 +68,8 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   const P = next.positions, T = next.triangles;
   normals = vertexNormals(P, T);
   lift = LIFT * next.scale;
-  origin = displayOrigin(P);
+  const fileBounds = meshBounds(P); // (one pass over the positions for both)
+  origin = displayOrigin(fileBounds.box);
   const positions = toDisplay(P, origin), triangles = new Uint32Array(T.length);
   triangles.set(T);
   const later = T.length / 3 > PICKING_LATER_FACES;
@@ -81,7 +82,7 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   // (the proxy's vertices are the mesh's: shaded with the mesh's own smooth normals, it looks
   // like the mesh, where its own would show every fold of the clustering)
   const proxy = coarse ? { positions: coarse.positions, triangles: coarse.triangles, normals: gather(normals, coarse.vertices) } : null;
-  post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, proxy, bounds: meshBounds(positions), bvh, scale: next.scale, ms: performance.now() - t0 }, [
+  post({ type: 'progress', stage: 'shown', id, info: structuredClone(next.info), positions, triangles, normals: shownNormals, proxy, bounds: shiftBounds(fileBounds, origin), bvh, scale: next.scale, ms: performance.now() - t0 }, [
     positions.buffer,
     triangles.buffer,
     shownNormals.buffer,
