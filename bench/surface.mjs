@@ -514,6 +514,19 @@ was set; the header says what each option does).
   levels, wasm, each curve traced by both builds in turn), 0.01 takes 4-7% off the trace time on
   spot_loop2_369k and 1% on nefertiti, with curves as long within 0.1%; 0.03 saves 1.5% more on
   spot_loop2_369k but settles more first-level sides on other (longer) local geodesics.
+- **slides = true, slide_min = 4, slide_gap = 2** (phase (iii), 2026-12-03; Straightener::slide). A path
+  pressed against a row of saddle vertices bends at each by up to its angle excess and stays locally
+  shortest; it leaves the row with a larger bend, and flipping that bend makes the vertex before it the
+  bend, a little smaller, one vertex per pass (the coil's inner side: excess 0.0016, bends of 0.026 that
+  shrank 1% a pass, ~90 passes for each). The slide works out where the bend stops and flips every vertex
+  on the way at once. In one wasm module against the tree before (bench:ab, 100 random curves, best of 2):
+  per-curve median 0.74x on the coil (43.6 -> 28.3 ms), 1.01x nefertiti (no curve changed), 1.02x
+  spot_loop2_369k, 1.01x the folded body, 1.02x the noisy spot, curves as long within 0.02% in total.
+  slide_min = 4: with slides of any length, short ones on nefertiti and the noisy spot moved 98 of 100
+  curves onto other local geodesics (each within 2%) and cost 4-6%; at 4 nefertiti's curves are the same.
+  slide_gap = 2: passing any number of untouched boundary vertices between bends, slides ran along the
+  folded body's long strips (210 vertices each) and cost it 19%; on the coil's rows the bends are one or
+  two vertices apart.
 - **max_passes = 100000** (phase (iii)): a safety bound on the passes (each flips every reflex vertex
   whose faces do not touch another's), not a tuning knob.
 

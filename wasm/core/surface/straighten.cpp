@@ -187,7 +187,13 @@ bool Straightener::pass(PathStats* stats) {
         !overlaps(room.p_first, room.q_last);
     const bool try_chord = fits && !no_chord_.contains(made.vertex);
     if (try_chord && stats) ++stats->chords_tried;
-    if (!try_chord || !chord(j, room, made)) zipper(j, made);
+    bool slid = false;
+    if (options.slides && !no_chain_.contains(made.vertex)) {
+      size_t ahead;
+      const size_t back = slide(j, ahead);
+      if (back > 1 || ahead > 1) zipper(j, made, back, ahead), slid = made.chain;
+    }
+    if (!slid && (!try_chord || !chord(j, room, made))) zipper(j, made);
     if (!overlaps(made.first, made.last)) {
       std::fill(taken_.begin() + made.first, taken_.begin() + made.last + 1, 1);
       ++used_;
@@ -283,7 +289,7 @@ bool Straightener::flip(size_t j, double turn, int first, int last, Flip& flip) 
 // replaces the strip faces around all the blocking vertices by the faces on their other side; the
 // pass keeps it only if the path gets shorter, otherwise v gets the single flip from then on
 // (no_chain_).
-void Straightener::zipper(size_t j, Flip& flip) {
+void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead) {
   const int v = apices_[j].vertex, n = static_cast<int>(strip_.size());
   if (n < 3 || no_chain_.contains(v)) return;
   const Portal& own = unfolded_.portals[std::clamp(apices_[j].portal, 0, n - 2)];
@@ -298,15 +304,19 @@ void Straightener::zipper(size_t j, Flip& flip) {
   };
   int first = flip.first, last = flip.last;
   pivots_.clear();
-  for (int i = first - 1; i > apices_[j - 1].portal && blocks(i);) {  // vertices before v, nearest first
+  // (A slide's: every side vertex after apex j-back and before apex j+ahead.)
+  const int before = apices_[j - back].portal;
+  const Apex& after = apices_[j + ahead];
+  for (int i = first - 1; i > before && (back > 1 || blocks(i));) {  // vertices before v, nearest first
     const int c = side_vertex(i);
-    while (i > apices_[j - 1].portal + 1 && side_vertex(i - 1) == c) --i;
+    while (i > before + 1 && side_vertex(i - 1) == c) --i;
     pivots_.push_back(c);
     first = i--;
   }
   std::reverse(pivots_.begin(), pivots_.end());  // in strip order
   pivots_.push_back(v);
-  for (int i = last; i < std::min(n - 1, apices_[j + 1].portal) && blocks(i);) {  // vertices after v
+  for (int i = last; i < std::min(n - 1, after.portal) && (ahead > 1 ? side_vertex(i) != after.vertex : blocks(i));) {
+    // (vertices after v)
     const int c = side_vertex(i);
     while (i + 1 < n - 1 && side_vertex(i + 1) == c) ++i;
     pivots_.push_back(c);
@@ -332,7 +342,7 @@ void Straightener::zipper(size_t j, Flip& flip) {
   size_t at = 0;
   int f = around(strip_[first], p0, entry, entry);
   for (int steps = 0;; ++steps) {
-    if (f < 0 || steps > 256) return;
+    if (f < 0 || steps > 256 + 16 * static_cast<int>(pivots_.size())) return;
     if (at + 1 == pivots_.size()) {
       if (f == strip_[last]) break;
     } else if (f == strip_[last]) {
@@ -349,6 +359,108 @@ void Straightener::zipper(size_t j, Flip& flip) {
   flip.first = first, flip.last = last;
   flip.other.swap(other);
   flip.chain = true;
+}
+
+// =================================================================================================
+// Slide
+// =================================================================================================
+
+double Straightener::angle_sum(int v) {
+  double& sum = angle_sums_[v];
+  if (std::isnan(sum)) {
+    bool closed;
+    vertex_fan(mesh_, v, fan_, closed);
+    if (!closed) return std::numeric_limits<double>::quiet_NaN();
+    sum = 0;
+    for (int f : fan_) sum += corner_angle(mesh_, f, v);
+  }
+  return sum;
+}
+
+size_t Straightener::slide(size_t j, size_t& ahead) {
+  ahead = 1;
+  const size_t count = apices_.size();
+  const int np = static_cast<int>(unfolded_.portals.size());
+  const Apex& v = apices_[j];
+  const double side = cross(v.pos - apices_[j - 1].pos, apices_[j + 1].pos - v.pos);  // < 0: a right turn
+  const bool left = on_left(v);
+  auto side_vertex = [&](int i) { return left ? unfolded_.portals[i].left_vertex : unfolded_.portals[i].right_vertex; };
+  auto side_pos = [&](int i) { return left ? unfolded_.left(i) : unfolded_.right(i); };
+  const int at = std::clamp(v.portal, 0, np - 1);
+  if (side_vertex(at) != v.vertex) return 1;
+  // m followed by the turn about vertex x (at c) by its angle excess (the way that opens a bend in
+  // v's direction); false for a boundary vertex.
+  auto turn_about = [&](int x, const Vec2& c, PlaneMotion& m) {
+    const double e = angle_sum(x) - 2 * kPi;
+    if (std::isnan(e)) return false;
+    const double a = side < 0 ? e : -e, ca = std::cos(a), sa = std::sin(a);
+    const Vec2 t = c - Vec2(ca * c.x() - sa * c.y(), sa * c.x() + ca * c.y());
+    PlaneMotion out;
+    out.c = m.c * ca - m.s * sa, out.s = m.s * ca + m.c * sa;
+    out.t = m(t);
+    m = out;
+    return true;
+  };
+  // Whether apex d can be passed (only a frozen bend on v's side: the others are flips of their own).
+  auto may_pass = [&](size_t d) {
+    if (d == 0 || d + 1 >= count) return false;  // (also d "below" 0: j - k wraps round)
+    const Apex& x = apices_[d];
+    return x.vertex >= 0 && on_left(x) == left && frozen_.contains(x.vertex) &&
+           (surely_frozen(d) || is_frozen(x.vertex, turn_at(apices_, d)));
+  };
+  // Whether the path, coming into apex d along `in` and leaving along `out`, bends there in v's
+  // direction by more than d's excess lets it (d is passed too).
+  auto passed = [&](size_t d, const Vec2& in, const Vec2& out) {
+    const double c = cross(in, out);
+    if (!(c * side > 0)) return false;
+    const double sum = angle_sum(apices_[d].vertex);
+    return !std::isnan(sum) && !straight_through(apices_[d].vertex, std::atan2(std::abs(c), in.dot(out)));
+  };
+  // From v along its side of the strip (step -1: back, +1: ahead), turning `m` about every vertex
+  // passed; `reached(d)` decides at each apex d = j + step·k whether the slide passes it as well.
+  // Returns k for the apex where it stops.
+  auto run = [&](int step, PlaneMotion& m, auto&& reached) {
+    size_t k = 1;
+    if (!may_pass(j + step)) return k;
+    int i = at, x = v.vertex, gap = 0;
+    Vec2 c = side_pos(at);
+    while (turn_about(x, c, m)) {
+      while (i >= 0 && i < np && side_vertex(i) == x) i += step;
+      if (i < 0 || i >= np) break;
+      x = side_vertex(i), c = side_pos(i);
+      const size_t d = j + step * static_cast<long>(k);
+      if (x != apices_[d].vertex) {  // a boundary vertex the path does not touch: passed too
+        if (step < 0 ? apices_[d].portal >= i : apices_[d].portal < i) break;  // d lies on the other side
+        if (++gap > options.slide_gap) break;
+        continue;
+      }
+      gap = 0;
+      if (!reached(d, m)) break;
+      ++k;
+      if (!may_pass(j + step * static_cast<long>(k))) break;
+    }
+    return k;
+  };
+  // (Not a slide unless it may pass enough bends: most candidates end here, before any angle sum.)
+  const size_t least = static_cast<size_t>(std::max(1, options.slide_min));
+  size_t may = 0;
+  for (size_t k = 1; may < least && may_pass(j - k); ++k) ++may;
+  for (size_t k = 1; may < least && may_pass(j + k); ++k) ++may;
+  if (may < least) return 1;
+  // Back, with the apex after v staying: its layout turns about each vertex passed.
+  PlaneMotion back_motion;
+  const size_t back = run(-1, back_motion, [&](size_t d, const PlaneMotion& m) {
+    return passed(d, apices_[d].pos - apices_[d - 1].pos, m(apices_[j + 1].pos) - apices_[d].pos);
+  });
+  // Ahead, from the apex the path now leaves: the layout beyond each vertex passed turns about it.
+  const Vec2 from = apices_[j - back].pos;
+  PlaneMotion ahead_motion;
+  ahead = run(+1, ahead_motion, [&](size_t d, const PlaneMotion& m) {
+    const Vec2 here = m(apices_[d].pos);
+    return passed(d, here - from, m(apices_[d + 1].pos) - here);
+  });
+  if (back + ahead - 2 < least) return ahead = 1;
+  return back;
 }
 
 // =================================================================================================

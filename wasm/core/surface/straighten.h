@@ -9,7 +9,9 @@
 // Three kinds of flip, each a named step below: the semi-star (`flip`), the zipper (`zipper`: the
 // semi-stars of a line of boundary vertices that would still block the path, at once) and the
 // chord (`chord`: the faces along the straight line between the neighbouring apices, which crosses
-// many rows of vertices at once). A pass (`pass`) flips every reflex vertex whose faces do not touch
+// many rows of vertices at once). A fourth step, the slide (`slide`), makes a zipper that runs past
+// the neighbouring apices where the path would otherwise slide along a row of saddle vertices one
+// vertex per pass. A pass (`pass`) flips every reflex vertex whose faces do not touch
 // another's and keeps the flips (`apply`) if the path gets shorter. A vertex is frozen up to the
 // turn the path made there (looked at again when the path turns more there, as after its
 // neighbours' flips), so that the path ends locally shortest: at every bend its angle on the far
@@ -138,8 +140,23 @@ class Straightener {
   // next to v, on v's side and between the neighbouring apices, that would still block the path with
   // v out of the way (they lie on v's side of the line between the neighbouring apices) are flipped
   // with it. Leaves `flip` as it is when no such vertex exists, or v's zipper did not shorten the
-  // path before.
-  void zipper(size_t j, Flip& flip);
+  // path before. With `back` or `ahead` above 1 (a slide's), every boundary vertex on v's side
+  // between apex j-back and apex j+ahead is flipped.
+  void zipper(size_t j, Flip& flip, size_t back = 1, size_t ahead = 1);
+  // The slide of apex j: how many apices back (the return value) and ahead the path leaves the
+  // boundary vertices next to v once v is flipped. A path pressed against a row of saddle vertices
+  // (each with angle sum 2π + e, e > 0) may turn by up to e at each of them and stay locally
+  // shortest, so it follows such a row, bending at every vertex, and leaves it with a larger bend v.
+  // Flipping v makes the vertex before it the bend (a little smaller), and so on: the bend slides
+  // along the row a vertex per pass (90 passes for one such bend on a coil's inner side). Here the
+  // slide is worked out in the plane instead: going round a vertex of angle excess e on its other
+  // side turns the layout beyond it by e about it, so where the vertices from v back to apex d are
+  // passed on their other side, the far apex lies at the near one's position turned about each of
+  // them in turn; d is passed too while the path would still bend at d by more than d's excess, in
+  // v's direction (d frozen, on v's side, at most options.slide_gap untouched boundary vertices from
+  // the last). Likewise ahead, from the apex the slide leaves. 1 and 1: no slide, also when it
+  // would pass fewer than options.slide_min bends.
+  size_t slide(size_t j, size_t& ahead);
   // The chord flip of apex j: the faces along the straight line from apex j-1 (p) to apex j+1 (q),
   // followed across the mesh from p (aimed once more where the surface turned the line), then
   // around q to its strip faces. False (flip unusable) when the line meets a boundary or a vertex,
@@ -167,6 +184,8 @@ class Straightener {
   bool is_frozen(int v, double turn) const;
   // Freezes v up to `turn` (infinity: for good, a vertex that cannot be flipped).
   void freeze(int v, double turn, PathStats* stats);
+  // The angle sum around v (cached in angle_sums_), NaN for a boundary vertex.
+  double angle_sum(int v);
   // Whether apex j's vertex is frozen for the path's turn there, told by the turn's cosine alone
   // (false: not told; `is_frozen` on the turn decides). Most apices of a long path are frozen, and
   // the pass then needs no atan2 for them.
@@ -205,7 +224,7 @@ class Straightener {
   std::vector<const Flip*> chosen_;
   // A zipper's vertices and faces; a chord's walk: the faces it entered, where it laid them, and
   // the edge it left each face by along the line.
-  std::vector<int> pivots_, zipper_faces_;
+  std::vector<int> pivots_, zipper_faces_, fan_;
   std::vector<int> walk_faces_;
   std::vector<std::array<Vec2, 3>> walk_laid_;
   std::vector<int8_t> walk_exits_;
