@@ -119,7 +119,7 @@ function flipOut(root, file, pairs) {
 }
 
 /** Exact distances of the pairs (MMP, native), or {error} when the solve takes over `seconds`. */
-function exactDistances(root, file, pairs, seconds = 300) {
+function exactDistances(root, file, pairs, seconds = 600) {
   try {
     const out = execFileSync(join(root, 'build/native/surface_scale_bench'), ['exact', file], { input: pairs.map((p) => p.join(' ')).join('\n'), encoding: 'utf8', maxBuffer: 1 << 26, timeout: 1000 * seconds });
     return JSON.parse(out);
@@ -136,7 +136,7 @@ const sum = (xs) => xs.reduce((a, b) => a + b, 0);
  * (2 × 10), log.
  */
 export async function surfaceScaleBenchmarks(root, data, options = {}) {
-  const { curves = 100, baseline = 20, sources = 2, targets = 10, meshes = SCALE_MESHES, log = () => {} } = options;
+  const { curves = 100, baseline = 20, sources = 2, targets = 50, meshes = SCALE_MESHES, log = () => {} } = options;
   const load_before = os.loadavg()[0];
   const t_start = performance.now();
   const rows = [];
