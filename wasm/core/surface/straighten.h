@@ -148,7 +148,7 @@ class Straightener {
   // (each with angle sum 2π + e, e > 0) may turn by up to e at each of them and stay locally
   // shortest, so it follows such a row, bending at every vertex, and leaves it with a larger bend v.
   // Flipping v makes the vertex before it the bend (a little smaller), and so on: the bend slides
-  // along the row a vertex per pass (90 passes for one such bend on a coil's inner side). Here the
+  // along the row a vertex per pass (BENCHMARKS.md, "Surface at scale", Slides). Here the
   // slide is worked out in the plane instead: going round a vertex of angle excess e on its other
   // side turns the layout beyond it by e about it, so where the vertices from v back to apex d are
   // passed on their other side, the far apex lies at the near one's position turned about each of
