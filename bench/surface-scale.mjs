@@ -293,7 +293,10 @@ walked by chords 3.0 M -> 1.6 M. The test coil (tests/native/surface/straighten_
 against 752 on 40 sides, lengths within 2e-4. Also measured and dropped that day: chords from the bend to apices
 further back (k = 2, 4, 8, ...: the line's aim ignored the vertices it passed on their other side and missed q
 twice in 3436 of 4491 tries, doubling the faces walked); chords at flat vertices whatever their turn (the folded
-body's developable limbs): 18% fewer flips, 29% more faces walked, no faster. What is left on the coil: a side
+body's developable limbs): 18% fewer flips, 29% more faces walked, no faster; chords whatever the turn in the tail
+(fewer than 4 or 16 bends left): passes 5271 -> 5237 / 5122 on the folded body, faces walked +17% / +36%, no faster;
+slides through bends that are not frozen: the first passes' ~80 bends became zippers the pass rejected, 24 times
+slower on the coil. What is left on the coil: a side
 crossing the tube's outer side, where convex and saddle vertices mix, whose small bends (1e-3 to 6e-3 rad) wander
 among neighbouring vertices for ~450 passes; and the first passes, ~80 semi-star flips each.`;
 
