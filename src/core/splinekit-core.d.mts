@@ -141,6 +141,8 @@ export interface SurfaceMeshHandle extends EmbindObject {
   scale(): number;
   /** Landmarks of the solver (0 below its minimum mesh size). */
   landmarkCount(): number;
+  /** The file faces that repeat an earlier face (the core takes that face for them), ascending; a view valid until the next call. */
+  duplicateFaces(): Int32Array;
   /** Milliseconds of the last build(): part 0 the mesh, 1 its solver (search graph, landmarks). */
   buildMilliseconds(part: number): number;
   resizePoints(n: number): void;

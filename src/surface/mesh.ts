@@ -28,6 +28,11 @@ export interface MeshInfo {
   unreferencedVertices: number;
   /** Faces with a repeated vertex (after welding): kept, but curves do not cross them. */
   degenerateFaces: number;
+  /**
+   * Faces on the vertices of an earlier face (after welding), such as the second side of a
+   * double-sided mesh: the earlier face stands for them (a point on one is that point on it).
+   */
+  duplicateFaces: number;
   /** Edges with more than two faces: left as boundaries. */
   nonManifoldEdges: number;
   /** Vertices whose faces form several fans: given one copy per fan. */
@@ -100,6 +105,7 @@ export const MESH_REPORT_FIELDS = [
   'welded_vertices',
   'unreferenced_vertices',
   'degenerate_faces',
+  'duplicate_faces',
   'non_manifold_edges',
   'non_manifold_vertices',
   'flipped_faces',
@@ -138,6 +144,12 @@ export class SurfaceMesh {
   readonly triangles: Int32Array;
   /** Bounding-box diagonal. */
   readonly scale: number;
+  /**
+   * The faces (file indices, ascending) that repeat an earlier face's vertices, such as the second
+   * side of a double-sided mesh: the core takes the earlier face for them (a point given on one is
+   * that point on it, and no result lies on them). A view draws and picks without them.
+   */
+  readonly duplicateFaces: Int32Array;
   private vertexCorner: Int32Array | null = null;
 
   private constructor(handle: SurfaceMeshHandle, positions: Float64Array, triangles: Int32Array) {
@@ -145,6 +157,7 @@ export class SurfaceMesh {
     this.positions = positions;
     this.triangles = triangles;
     this.scale = handle.scale();
+    this.duplicateFaces = handle.duplicateFaces().slice();
     const r = readReport(handle);
     const info: MeshInfo = {
       vertices: r.file_vertices,
@@ -153,6 +166,7 @@ export class SurfaceMesh {
       weldedVertices: r.welded_vertices,
       unreferencedVertices: r.unreferenced_vertices,
       degenerateFaces: r.degenerate_faces,
+      duplicateFaces: r.duplicate_faces,
       nonManifoldEdges: r.non_manifold_edges,
       nonManifoldVertices: r.non_manifold_vertices,
       flippedFaces: r.flipped_faces,
@@ -167,6 +181,7 @@ export class SurfaceMesh {
     if (info.weldedVertices) w.push(`welded ${count(info.weldedVertices, 'vertices')} that share a position with an earlier one`);
     if (info.unreferencedVertices) w.push(`ignored ${count(info.unreferencedVertices, 'vertices')} that no face uses`);
     if (info.degenerateFaces) w.push(`${count(info.degenerateFaces, 'faces')} repeat a vertex: curves do not cross them`);
+    if (info.duplicateFaces) w.push(`${count(info.duplicateFaces, 'faces')} repeat an earlier face (a double-sided mesh?): taken as that face`);
     if (info.nonManifoldEdges) w.push(`${count(info.nonManifoldEdges, 'edges')} have more than two faces: treated as boundaries`);
     if (info.nonManifoldVertices) w.push(`${count(info.nonManifoldVertices, 'vertices')} join separate fans of faces: split`);
     if (info.flippedFaces) w.push(`${count(info.flippedFaces, 'faces')} were wound against their neighbours: re-oriented`);

@@ -539,3 +539,39 @@ test('Surface mode: a scan in georeferenced coordinates is shown, picked and tra
   expect(s.splines).toHaveLength(1);
   await expectOnMesh(page, s.splines[0], s.scale!);
 });
+
+test('Surface mode: a double-sided mesh is shown, picked and traced on as one surface', async ({ page }) => {
+  await openSurface(page);
+  // Every face written again with the other winding: drawn as they were, the two sides fought for
+  // the pixels and their normals cancelled; built as they were, every edge had four faces and the
+  // mesh fell apart into single faces, so no curve could join two clicks.
+  const once = torusOBJ(48, [0, 0, 0]);
+  const faces = once.split('\n').filter((l) => l.startsWith('f '));
+  const twice = once + faces.map((l) => { const [, a, b, c] = l.split(' '); return `f ${a} ${c} ${b}`; }).join('\n') + '\n';
+  const grids: { rgb: number[]; hit: boolean }[][] = [];
+  for (const [name, text] of [['torus.obj', once], ['double-sided-torus.obj', twice]]) {
+    await page.getByTestId('surface-mesh-input').setInputFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(text) });
+    await page.waitForFunction((f) => {
+      const s = window.splinekitEditor!.surface.state();
+      return s.file === f && s.meshReady;
+    }, name);
+    await settled(page);
+    grids.push(await canvasGrid(page, 40, 25));
+  }
+  const info = await page.evaluate(() => window.splinekitEditor!.surface.state().meshInfo!);
+  expect(info.duplicateFaces).toBe(faces.length);
+  expect(info.components).toBe(1);
+  const [single, double] = grids;
+  expect(single.filter((g) => g.hit).length, 'grid points on the torus').toBeGreaterThan(150);
+  expect(double.filter((g, i) => g.hit !== single[i].hit).length, 'grid points picked in one and not the other').toBeLessThanOrEqual(3);
+  // The same shading where both are hit (two sides fighting, or normals summed to nothing, are not).
+  const differ = double.filter((g, i) => g.hit && single[i].hit && g.rgb.some((c, k) => Math.abs(c - single[i].rgb[k]) > 12));
+  expect(differ.length, 'grid points shaded differently').toBeLessThanOrEqual(3);
+  const s = await drawSpline(page, [
+    [0.3, 0.5],
+    [0.45, 0.3],
+    [0.7, 0.5],
+  ]);
+  expect(s.splines).toHaveLength(1);
+  await expectOnMesh(page, s.splines[0], s.scale!);
+});

@@ -535,6 +535,41 @@ test('repairs are reported, and points still mean the file: duplicated seam, fli
   }
 });
 
+test('a double-sided mesh is one surface: the faces of its second side are listed, and points on them are points on the first', () => {
+  // The bumpy patch of the test above, every face written again with the other winding.
+  const positions: number[] = [];
+  const v = (i: number, j: number) => positions.push(i, j, 0.2 * Math.sin(i + 2 * j)) / 3 - 1;
+  const grid = [0, 1, 2, 3].map((i) => [0, 1, 2].map((j) => v(i, j)));
+  const once: number[] = [];
+  for (let j = 0; j < 2; j++)
+    for (let i = 0; i < 3; i++) once.push(grid[i][j], grid[i + 1][j], grid[i + 1][j + 1], grid[i][j], grid[i + 1][j + 1], grid[i][j + 1]);
+  const faces = once.length / 3;
+  const twice = once.concat(Array.from({ length: faces }, (_, f) => [once[3 * f], once[3 * f + 2], once[3 * f + 1]]).flat());
+  const single = SurfaceMesh.fromArrays(positions, once);
+  const mesh = SurfaceMesh.fromArrays(positions, twice);
+  try {
+    expect(single.duplicateFaces).toHaveLength(0);
+    expect(Array.from(mesh.duplicateFaces)).toEqual(Array.from({ length: faces }, (_, f) => faces + f));
+    expect(mesh.info.duplicateFaces).toBe(faces);
+    expect(mesh.info.components).toBe(1);
+    expect(mesh.info.boundaryLoops).toBe(1);
+    expect(mesh.info.nonManifoldEdges).toBe(0);
+    expect(mesh.info.warnings).toEqual([`${faces} faces repeat an earlier face (a double-sided mesh?): taken as that face`]);
+    // A path between points given on the second side: the same as between those points on the
+    // first, and its points lie on the first side's faces.
+    const a: MeshPoint = { face: faces + 1, uv: [0.2, 0.5] }, b: MeshPoint = { face: faces + 10, uv: [0.3, 0.1] };
+    const a1: MeshPoint = { face: 1, uv: [0.5, 0.2] }, b1: MeshPoint = { face: 10, uv: [0.1, 0.3] };
+    expectNear(evalPoint(positions, twice, a), evalPoint(positions, once, a1), 1e-15, 'a');
+    const path = mesh.shortestPath(a, b), reference = single.shortestPath(a1, b1);
+    expect(path.length).toBeCloseTo(reference.length, 12);
+    expectNear(Array.from(path.xyz.slice(0, 3)) as Vec3, evalPoint(positions, once, a1), 1e-12, 'start');
+    for (const p of path.points) expect(p.face).toBeLessThan(faces);
+  } finally {
+    mesh.dispose();
+    single.dispose();
+  }
+});
+
 // ---------------------------------------------------------------------------------------------
 // Memory
 // ---------------------------------------------------------------------------------------------

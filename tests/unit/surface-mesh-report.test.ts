@@ -43,13 +43,21 @@ function oddMesh() {
     face(c, vertex(1, y - 0.5), vertex(1, y + 0.5));
     face(c, vertex(-1, y + 0.5), vertex(-1, y - 0.5));
   }
+  // P4: seven faces that repeat a face of P1 after welding, in another order or winding (as a
+  // double-sided mesh has them): left out of the adjacency and the fans, no part or boundary of
+  // their own; the face they repeat stands for them.
+  face(a[5], a[1], a[0]); face(a[1], a[5], a[0]); face(a[0], a[1], a[5]); // P1's face 0 (a0 a1 a5)
+  face(a[6], a[2], a[1]); face(a[1], a[2], a[6]); // its face 2 (d1 = a1, a2, a6)
+  face(a[5], a[6], a[1]); // its face 3 (a1, d5 = a5, a6)
+  face(a[4], a[0], a[5]); // its face 1 (a0 a4 a5)
   const expected = {
     vertices: 8 + 5 + 6 + 6 + 2 * 5,
-    faces: 6 + 2 + 4 + 4,
+    faces: 6 + 2 + 4 + 4 + 7,
     usedVertices: 8 + (6 + 2 * 3) + 2 * (5 + 1),
     weldedVertices: 5,
     unreferencedVertices: 6,
     degenerateFaces: 2,
+    duplicateFaces: 7,
     nonManifoldEdges: 1,
     nonManifoldVertices: 4,
     flippedFaces: 3,
@@ -74,6 +82,7 @@ test('every count of the mesh report lands in its own MeshInfo field', () => {
       'welded 5 vertices that share a position with an earlier one',
       'ignored 6 vertices that no face uses',
       '2 faces repeat a vertex: curves do not cross them',
+      '7 faces repeat an earlier face (a double-sided mesh?): taken as that face',
       '1 edges have more than two faces: treated as boundaries',
       '4 vertices join separate fans of faces: split',
       '3 faces were wound against their neighbours: re-oriented',

@@ -7,6 +7,7 @@
 // in pointsOut() (triples), xyzOut() (x, y, z per point) and offsetsOut() (per curve).
 #include <emscripten/bind.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -85,6 +86,14 @@ class SurfaceMeshHandle {
   double bytes() const { return mesh_ ? double(mesh_bytes(*mesh_) + (solver_ ? solver_bytes_ : 0)) : 0; }
   double scale() const { return mesh_ ? mesh_->scale : 0; }
   int landmarkCount() const { return solver_ ? solver_->landmarks().count() : 0; }
+  // The file faces that repeat an earlier face (surface::TriMesh::duplicates), ascending.
+  val duplicateFaces() {
+    duplicate_faces_.clear();
+    if (mesh_)
+      for (const auto& [duplicate, first] : mesh_->duplicates) duplicate_faces_.push_back(mesh_->file_face[duplicate]);
+    std::sort(duplicate_faces_.begin(), duplicate_faces_.end());
+    return view_of(duplicate_faces_);
+  }
   // Milliseconds of the last build(): 0 the mesh, 1 its solver (search graph and landmarks).
   double buildMilliseconds(int part) const { return part == 0 || part == 1 ? build_ms_[part] : 0; }
 
@@ -370,7 +379,7 @@ class SurfaceMeshHandle {
   std::vector<double> positions_in_;
   std::vector<int> triangles_in_;
   std::vector<double> points_in_, xy_in_, points_out_, xyz_out_, curve_ms_;
-  std::vector<int> offsets_out_;
+  std::vector<int> offsets_out_, duplicate_faces_;
   std::vector<MeshPoint> scratch_, spline_;
   std::vector<TraceStats> curve_counters_;
   PathStats path_counters_;
@@ -393,6 +402,7 @@ EMSCRIPTEN_BINDINGS(splinekit_surface) {
       .function("bytes", &SurfaceMeshHandle::bytes)
       .function("scale", &SurfaceMeshHandle::scale)
       .function("landmarkCount", &SurfaceMeshHandle::landmarkCount)
+      .function("duplicateFaces", &SurfaceMeshHandle::duplicateFaces)
       .function("buildSearch", &SurfaceMeshHandle::buildSearch)
       .function("searchBuilt", &SurfaceMeshHandle::searchBuilt)
       .function("buildMilliseconds", &SurfaceMeshHandle::buildMilliseconds)

@@ -78,6 +78,52 @@ TEST(SurfaceMesh, ReportsNonManifoldEdgesAndSplitsBowties) {
   EXPECT_EQ(mesh.file_vertex[t4[0]], 5);
 }
 
+// A double-sided mesh (every face listed again with the other winding, as some exporters write
+// them; plus a third copy of one face) is the single-sided mesh: the copies are left out of the
+// adjacency and the fans, and points on them are points on the face they repeat.
+TEST(SurfaceMesh, ADoubleSidedMeshIsOneSurface) {
+  const Arrays once = testing::cube(4);
+  Arrays twice = once;
+  const int nf = static_cast<int>(once.triangles.size() / 3);
+  for (int f = 0; f < nf; ++f)
+    for (int k : {0, 2, 1}) twice.triangles.push_back(once.triangles[3 * f + k]);
+  for (int k : {1, 2, 0}) twice.triangles.push_back(once.triangles[3 * 7 + k]);  // face 7 a third time, turned
+  const TriMesh single = testing::build(once), mesh = testing::build(twice);
+  EXPECT_EQ(mesh.report.duplicate_faces, nf + 1);
+  EXPECT_EQ(mesh.report.components, 1);
+  EXPECT_EQ(mesh.report.non_manifold_edges, 0);
+  EXPECT_EQ(mesh.report.non_manifold_vertices, 0);
+  EXPECT_EQ(mesh.report.boundary_edges, 0);
+  EXPECT_EQ(mesh.positions.size(), single.positions.size());
+  // The first copy of each face has its three neighbours; points on the others move to it.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int f = 0; f < static_cast<int>(twice.triangles.size() / 3); ++f) {
+    const int first = f < nf ? f : f < 2 * nf ? f - nf : 7;
+    for (int k = 0; k < 3; ++k) EXPECT_GE(mesh.adjacency[mesh.mesh_face[first]][k], 0) << "face " << first;
+    double a = u(rng), b = u(rng);
+    if (a + b > 1) a = 1 - a, b = 1 - b;
+    const MeshPoint on_file{f, Vec2(a, b)};
+    const MeshPoint p = to_mesh_point(mesh, on_file);
+    EXPECT_EQ(p.face, mesh.mesh_face[first]) << "face " << f;
+    // The same point of space as the file's barycentrics on the file face's own corners.
+    Vec3 x = Vec3::Zero();
+    for (int c = 0; c < 3; ++c) {
+      const int v = twice.triangles[3 * f + c];
+      x += weights(on_file)[c] * Vec3(twice.positions[3 * v], twice.positions[3 * v + 1], twice.positions[3 * v + 2]);
+    }
+    EXPECT_LT((eval_position(mesh, p) - x).norm(), 1e-12) << "face " << f;
+  }
+  // A path between points given on copies is the path between the same points on one side.
+  GeodesicSolver solver(mesh), one_side(single);
+  GeodesicPath path, reference;
+  const MeshPoint a{nf + 3, Vec2(0.2, 0.3)}, b{2 * nf - 5, Vec2(0.4, 0.1)};
+  ASSERT_TRUE(solver.shortest_path(to_mesh_point(mesh, a), to_mesh_point(mesh, b), path));
+  ASSERT_TRUE(one_side.shortest_path(to_mesh_point(single, {3, Vec2(0.3, 0.2)}),
+                                     to_mesh_point(single, {nf - 5, Vec2(0.1, 0.4)}), reference));
+  EXPECT_NEAR(path_length(mesh, path), path_length(single, reference), 1e-12);
+}
+
 TEST(SurfaceMesh, NumbersNeighboursCloseAndKeepsFileIndices) {
   // A grid whose file lists its faces (and vertices) shuffled, some faces wound the other way.
   const Arrays grid = testing::planar_grid(32);

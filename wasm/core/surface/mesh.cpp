@@ -179,6 +179,30 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
   }
   mesh.flipped.assign(num_faces, 0);
 
+  // ---- Faces that repeat an earlier face's vertices (first occurrence in file order wins) ---------
+  // A double-sided mesh lists every face twice (once per winding); left in, the copies would give
+  // every edge four faces, and the mesh would fall apart into single faces.
+  std::vector<int> repeats(num_faces, -1);  // the earlier face a face repeats, or -1
+  {
+    std::vector<std::pair<std::array<int, 3>, int>> sorted;
+    sorted.reserve(num_faces);
+    for (int f = 0; f < num_faces; ++f) {
+      std::array<int, 3> t = mesh.triangles[f];
+      if (is_degenerate(t)) continue;
+      std::sort(t.begin(), t.end());
+      sorted.push_back({t, f});
+    }
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t i = 1; i < sorted.size(); ++i) {
+      if (sorted[i].first != sorted[i - 1].first) continue;
+      repeats[sorted[i].second] =
+          repeats[sorted[i - 1].second] >= 0 ? repeats[sorted[i - 1].second] : sorted[i - 1].second;
+      ++report.duplicate_faces;
+    }
+  }
+  // Faces left out of the adjacency, the fans and the boundary: degenerate and repeated ones.
+  auto isolated = [&](int f) { return repeats[f] >= 0 || is_degenerate(mesh.triangles[f]); };
+
   // ---- Adjacency by matching undirected edges -----------------------------------------------------
   mesh.adjacency.assign(num_faces, {-1, -1, -1});
   {
@@ -186,10 +210,8 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
     half_edges.reserve(3 * static_cast<size_t>(num_faces));
     for (int f = 0; f < num_faces; ++f) {
       const auto& t = mesh.triangles[f];
-      if (is_degenerate(t)) {
-        ++report.degenerate_faces;
-        continue;
-      }
+      if (is_degenerate(t)) ++report.degenerate_faces;
+      if (isolated(f)) continue;
       for (int k = 0; k < 3; ++k) half_edges.push_back({edge_key(t[k], t[(k + 1) % 3]), f, static_cast<int8_t>(k)});
     }
     std::sort(half_edges.begin(), half_edges.end(),
@@ -216,6 +238,7 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
     for (int seed = 0; seed < num_faces; ++seed) {
       if (seen[seed]) continue;
       seen[seed] = 1;
+      if (repeats[seed] >= 0) continue;  // (the face it repeats counts)
       ++report.components;
       queue.assign(1, seed);
       for (size_t q = 0; q < queue.size(); ++q) {
@@ -250,14 +273,14 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
   const int nv = static_cast<int>(mesh.positions.size());
   {
     std::vector<int> offsets(nv + 1, 0);
-    for (const auto& t : mesh.triangles)
-      if (!is_degenerate(t))
-        for (int v : t) ++offsets[v + 1];
+    for (int f = 0; f < num_faces; ++f)
+      if (!isolated(f))
+        for (int v : mesh.triangles[f]) ++offsets[v + 1];
     for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
     std::vector<int> incident(offsets[nv]);
     std::vector<int> fill(offsets.begin(), offsets.end() - 1);
     for (int f = 0; f < num_faces; ++f)
-      if (!is_degenerate(mesh.triangles[f]))
+      if (!isolated(f))
         for (int v : mesh.triangles[f]) incident[fill[v]++] = f;
 
     mesh.vertex_face.assign(nv, -1);
@@ -313,7 +336,7 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
   {
     std::vector<std::pair<int, int>> boundary;  // (from, to) along the winding
     for (int f = 0; f < num_faces; ++f) {
-      if (is_degenerate(mesh.triangles[f])) continue;
+      if (isolated(f)) continue;
       for (int k = 0; k < 3; ++k)
         if (mesh.adjacency[f][k] < 0) boundary.emplace_back(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]);
     }
@@ -340,6 +363,9 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
   }
   mesh.scale = std::max((hi - lo).norm(), 1e-300);
   order_for_locality(mesh, lo, (hi - lo).maxCoeff());
+  for (int f = 0; f < num_faces; ++f)
+    if (repeats[f] >= 0) mesh.duplicates.emplace_back(mesh.mesh_face[f], mesh.mesh_face[repeats[f]]);
+  std::sort(mesh.duplicates.begin(), mesh.duplicates.end());
   report.used_vertices = static_cast<int>(mesh.positions.size());
   out = std::move(mesh);
   return MeshStatus::kOk;
@@ -349,7 +375,8 @@ size_t mesh_bytes(const TriMesh& m) {
   return m.positions.capacity() * sizeof(Vec3) + m.triangles.capacity() * sizeof(m.triangles[0]) +
          m.adjacency.capacity() * sizeof(m.adjacency[0]) +
          (m.vertex_face.capacity() + m.file_vertex.capacity() + m.mesh_vertex.capacity()) * sizeof(int) +
-         m.flipped.capacity() + (m.file_face.capacity() + m.mesh_face.capacity()) * sizeof(int);
+         m.flipped.capacity() + (m.file_face.capacity() + m.mesh_face.capacity()) * sizeof(int) +
+         m.duplicates.capacity() * sizeof(m.duplicates[0]);
 }
 
 Vec3 eval_position(const TriMesh& mesh, const MeshPoint& p) {
@@ -367,8 +394,20 @@ Vec3 face_normal(const TriMesh& mesh, int face) {
 
 MeshPoint to_mesh_point(const TriMesh& mesh, const MeshPoint& p) {
   const int f = mesh.mesh_face[p.face];
-  if (mesh.flipped[f]) return {f, Vec2(p.uv.y(), p.uv.x())};
-  return {f, p.uv};
+  const MeshPoint on_f = mesh.flipped[f] ? MeshPoint{f, Vec2(p.uv.y(), p.uv.x())} : MeshPoint{f, p.uv};
+  if (mesh.duplicates.empty()) return on_f;
+  const auto d = std::lower_bound(mesh.duplicates.begin(), mesh.duplicates.end(), std::make_pair(f, -1));
+  if (d == mesh.duplicates.end() || d->first != f) return on_f;
+  // The same vertices (welded, never split: a duplicate is in no fan) in the first face's order.
+  const int g = d->second;
+  const Eigen::Vector3d w = weights(on_f);
+  Eigen::Vector3d on_g = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const int c = corner_of(mesh, g, mesh.triangles[f][k]);
+    if (c < 0) return on_f;  // (g's vertex was split off as non-manifold: the copy stays apart)
+    on_g[c] = w[k];
+  }
+  return from_weights(g, on_g);
 }
 
 MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& p) {

@@ -9,7 +9,8 @@
 //     neighbours on the surface are mostly neighbours in memory (what the algorithms use).
 // Every file face is a mesh face (file_face / mesh_face map between the two); its winding may be
 // flipped (`flipped[f]`), which swaps the barycentric coordinates of points on it (to_mesh_point /
-// to_file_point).
+// to_file_point). A face on the same vertices as an earlier one (a double-sided mesh's second side)
+// stays a mesh face but out of the adjacency; to_mesh_point moves points on it to the earlier face.
 #pragma once
 
 #include "common/geometry.h"  // Vec2, Vec3 (and kPi, cross, orient) for the whole surface core
@@ -40,6 +41,8 @@ struct MeshReport {
   int welded_vertices = 0;        // file vertices merged into an earlier one at the same position
   int unreferenced_vertices = 0;  // file vertices no face uses
   int degenerate_faces = 0;       // faces with a repeated vertex (after welding): kept, isolated
+  int duplicate_faces = 0;        // faces on the vertices of an earlier face (after welding; a double-sided
+                                  // mesh lists each face twice): kept, isolated, their points moved to it
   int non_manifold_edges = 0;     // edges with more than two faces: left as boundaries
   int non_manifold_vertices = 0;  // vertices whose faces form several fans: given one copy per fan
   int flipped_faces = 0;          // faces whose winding was reversed to agree with their neighbours
@@ -52,13 +55,14 @@ struct MeshReport {
 // The report's counts by name, in one fixed order: the one list of them that crosses to TypeScript
 // (the bindings hand it on as an object, src/surface/mesh.ts reads the counts by these names, so
 // no other layer restates their order).
-inline std::array<std::pair<const char*, int>, 13> report_fields(const MeshReport& r) {
+inline std::array<std::pair<const char*, int>, 14> report_fields(const MeshReport& r) {
   return {{{"file_vertices", r.file_vertices},
            {"file_faces", r.file_faces},
            {"used_vertices", r.used_vertices},
            {"welded_vertices", r.welded_vertices},
            {"unreferenced_vertices", r.unreferenced_vertices},
            {"degenerate_faces", r.degenerate_faces},
+           {"duplicate_faces", r.duplicate_faces},
            {"non_manifold_edges", r.non_manifold_edges},
            {"non_manifold_vertices", r.non_manifold_vertices},
            {"flipped_faces", r.flipped_faces},
@@ -78,7 +82,10 @@ struct TriMesh {
   std::vector<int> file_face;                 // #F mesh face -> file face
   std::vector<int> mesh_face;                 // #F file face -> mesh face
   std::vector<uint8_t> flipped;               // #F 1 when the (mesh) face's winding was reversed
-  double scale = 1;                           // bounding-box diagonal
+  // (duplicate, first) mesh faces, by duplicate: a face on the same vertices as an earlier one in the
+  // file (to_mesh_point moves points from the duplicate to the first, which alone has neighbours).
+  std::vector<std::pair<int, int>> duplicates;
+  double scale = 1;  // bounding-box diagonal
   MeshReport report;
 };
 
@@ -100,7 +107,8 @@ Vec3 face_normal(const TriMesh& mesh, int face);  // unit (zero for a degenerate
 inline Eigen::Vector3d weights(const MeshPoint& p) { return {1 - p.uv.x() - p.uv.y(), p.uv.x(), p.uv.y()}; }
 inline MeshPoint from_weights(int face, const Eigen::Vector3d& w) { return {face, Vec2(w[1], w[2])}; }
 
-// File space <-> mesh space (the face renumbered; the winding of flipped faces swaps u and v).
+// File space <-> mesh space (the face renumbered; the winding of flipped faces swaps u and v; a
+// point on a duplicate face becomes the same point on the face it repeats).
 MeshPoint to_mesh_point(const TriMesh& mesh, const MeshPoint& file_point);
 MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& mesh_point);
 // A mesh vertex as a point on its vertex_face.

@@ -65,7 +65,12 @@ async function load(id: number, bytes: ArrayBuffer, name: string): Promise<void>
   const next = await SurfaceMesh.load(new Uint8Array(bytes), name, { deferSearch: true }); // throws: the previous mesh stays
   mesh?.dispose();
   mesh = next;
-  const P = next.positions, T = next.triangles;
+  const P = next.positions;
+  // The faces shown and picked: a face that repeats an earlier one (a double-sided mesh's other
+  // side) collapsed to a point, so that it neither fights the first for the pixels, turns the
+  // normals round, nor takes a click (the face indices stay the file's).
+  const T = next.duplicateFaces.length > 0 ? next.triangles.slice() : next.triangles;
+  for (const f of next.duplicateFaces) T[3 * f + 1] = T[3 * f + 2] = T[3 * f];
   normals = vertexNormals(P, T);
   lift = LIFT * next.scale;
   const fileBounds = meshBounds(P); // (one pass over the positions for both)
