@@ -506,31 +506,19 @@ function torusOBJ(n: number, centre: [number, number, number]): string {
   return lines.join('\n') + '\n';
 }
 
-test('Surface mode: a scan in georeferenced coordinates is shown, picked and traced on like the same mesh at the origin', async ({ page }) => {
-  await openSurface(page);
-  // Far away, the file's coordinates are 0.25-0.5 apart in single precision: shown as they were, the
-  // torus came out blocky and clicks picked the wrong faces.
-  const grids: { rgb: number[]; hit: boolean }[][] = [];
-  for (const [name, centre] of [
-    ['torus.obj', [0, 0, 0]],
-    ['georeferenced-torus.obj', [500000, 4000000, 100]],
-  ] as [string, [number, number, number]][]) {
-    await page.getByTestId('surface-mesh-input').setInputFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(torusOBJ(64, centre)) });
-    await page.waitForFunction((f) => {
-      const s = window.splinekitEditor!.surface.state();
-      return s.file === f && s.meshReady;
-    }, name);
-    await settled(page);
-    grids.push(await canvasGrid(page, 40, 25));
-  }
-  const [near, far] = grids;
-  expect(near.filter((g) => g.hit).length, 'grid points on the torus').toBeGreaterThan(150);
-  // The same picture and the same picking, point for point (silhouette pixels aside).
-  expect(far.filter((g, i) => g.hit !== near[i].hit).length, 'grid points picked in one and not the other').toBeLessThanOrEqual(3);
-  const background = [0x1b, 0x1d, 0x21];
-  const isBackground = (rgb: number[]) => rgb.every((c, k) => Math.abs(c - background[k]) <= 3);
-  expect(far.filter((g) => g.hit === isBackground(g.rgb)).length, 'grid points where picture and picking disagree').toBeLessThanOrEqual(3);
-  // A spline drawn on it traces on its faces and is drawn over it.
+/** Opens the OBJ text as `name` in Surface mode, once ready and settled: its canvas on a 40 × 25 grid. */
+async function meshGrid(page: Page, name: string, text: string) {
+  await page.getByTestId('surface-mesh-input').setInputFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(text) });
+  await page.waitForFunction((f) => {
+    const s = window.splinekitEditor!.surface.state();
+    return s.file === f && s.meshReady;
+  }, name);
+  await settled(page);
+  return canvasGrid(page, 40, 25);
+}
+
+/** A spline drawn by three clicks across the view traces on the mesh's faces and is drawn over it. */
+async function drawsOnMesh(page: Page) {
   const s = await drawSpline(page, [
     [0.3, 0.5],
     [0.45, 0.3],
@@ -538,6 +526,22 @@ test('Surface mode: a scan in georeferenced coordinates is shown, picked and tra
   ]);
   expect(s.splines).toHaveLength(1);
   await expectOnMesh(page, s.splines[0], s.scale!);
+}
+
+test('Surface mode: a scan in georeferenced coordinates is shown, picked and traced on like the same mesh at the origin', async ({ page }) => {
+  await openSurface(page);
+  // Far away, the file's coordinates are 0.25-0.5 apart in single precision: shown as they were, the
+  // torus came out blocky and clicks picked the wrong faces.
+  const near = await meshGrid(page, 'torus.obj', torusOBJ(64, [0, 0, 0]));
+  const far = await meshGrid(page, 'georeferenced-torus.obj', torusOBJ(64, [500000, 4000000, 100]));
+  expect(near.filter((g) => g.hit).length, 'grid points on the torus').toBeGreaterThan(150);
+  // The same picture and the same picking, point for point (silhouette pixels aside).
+  expect(far.filter((g, i) => g.hit !== near[i].hit).length, 'grid points picked in one and not the other').toBeLessThanOrEqual(3);
+  const background = [0x1b, 0x1d, 0x21];
+  const isBackground = (rgb: number[]) => rgb.every((c, k) => Math.abs(c - background[k]) <= 3);
+  expect(far.filter((g) => g.hit === isBackground(g.rgb)).length, 'grid points where picture and picking disagree').toBeLessThanOrEqual(3);
+  // A spline drawn on it traces on its faces and is drawn over it.
+  await drawsOnMesh(page);
 });
 
 test('Surface mode: a double-sided mesh is shown, picked and traced on as one surface', async ({ page }) => {
@@ -548,30 +552,15 @@ test('Surface mode: a double-sided mesh is shown, picked and traced on as one su
   const once = torusOBJ(48, [0, 0, 0]);
   const faces = once.split('\n').filter((l) => l.startsWith('f '));
   const twice = once + faces.map((l) => { const [, a, b, c] = l.split(' '); return `f ${a} ${c} ${b}`; }).join('\n') + '\n';
-  const grids: { rgb: number[]; hit: boolean }[][] = [];
-  for (const [name, text] of [['torus.obj', once], ['double-sided-torus.obj', twice]]) {
-    await page.getByTestId('surface-mesh-input').setInputFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(text) });
-    await page.waitForFunction((f) => {
-      const s = window.splinekitEditor!.surface.state();
-      return s.file === f && s.meshReady;
-    }, name);
-    await settled(page);
-    grids.push(await canvasGrid(page, 40, 25));
-  }
+  const single = await meshGrid(page, 'torus.obj', once);
+  const double = await meshGrid(page, 'double-sided-torus.obj', twice);
   const info = await page.evaluate(() => window.splinekitEditor!.surface.state().meshInfo!);
   expect(info.duplicateFaces).toBe(faces.length);
   expect(info.components).toBe(1);
-  const [single, double] = grids;
   expect(single.filter((g) => g.hit).length, 'grid points on the torus').toBeGreaterThan(150);
   expect(double.filter((g, i) => g.hit !== single[i].hit).length, 'grid points picked in one and not the other').toBeLessThanOrEqual(3);
   // The same shading where both are hit (two sides fighting, or normals summed to nothing, are not).
   const differ = double.filter((g, i) => g.hit && single[i].hit && g.rgb.some((c, k) => Math.abs(c - single[i].rgb[k]) > 12));
   expect(differ.length, 'grid points shaded differently').toBeLessThanOrEqual(3);
-  const s = await drawSpline(page, [
-    [0.3, 0.5],
-    [0.45, 0.3],
-    [0.7, 0.5],
-  ]);
-  expect(s.splines).toHaveLength(1);
-  await expectOnMesh(page, s.splines[0], s.scale!);
+  await drawsOnMesh(page);
 });
