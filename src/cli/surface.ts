@@ -8,7 +8,7 @@ import { DEFAULT_MAX_MESH_BYTES, DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, Spl
 import { meshHandles } from '../surface/mesh-handle.js';
 import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
-async function loadMesh(path: string): Promise<SurfaceMesh> {
+export async function loadMesh(path: string): Promise<SurfaceMesh> {
   return SurfaceMesh.load(readInput(path, DEFAULT_MAX_MESH_BYTES), basename(path));
 }
 

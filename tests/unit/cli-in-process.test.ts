@@ -66,6 +66,20 @@ describe('info', () => {
     expect(json.splines[2].points.at(-1)).toEqual([20, 10]);
   });
 
+  test('a mesh: what building it found and repaired, the warnings, and --json the same as SurfaceMesh.info', async () => {
+    // A square of two triangles written twice, the second time with the other winding (double-sided),
+    // and a fifth vertex no face uses.
+    const obj = 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\nf 1 2 3\nf 1 3 4\nf 1 3 2\nf 1 4 3\n';
+    const { log } = await run(info, [write('square.obj', obj)]);
+    expect(log).toContain('square.obj: 5 vertices, 4 faces, 1 parts, 1 boundary loops');
+    expect(log).toContain('repairs: welded 0, unused 1, degenerate 0, repeated 2, non-manifold 0 edges / 0 vertices, flipped 0');
+    expect(log).toContain('warnings: 2');
+    expect(log).toContain('  - 2 faces repeat an earlier face (a double-sided mesh?): taken as that face');
+    const { stdout } = await run(info, [write('square.obj', obj), '--json', '-']);
+    expect(JSON.parse(stdout)).toMatchObject({ file: 'square.obj', vertices: 5, faces: 4, duplicateFaces: 2, components: 1, unreferencedVertices: 1 });
+    await expect(info.run([write('bad.obj', 'v 0 0 0\nf 1 2 3\n')])).rejects.toBeInstanceOf(SplinekitError);
+  });
+
   test('bad usage throws UsageError, bad input SplinekitError', async () => {
     await expect(info.run([])).rejects.toBeInstanceOf(UsageError);
     await expect(info.run(['a.svg', 'b.svg'])).rejects.toBeInstanceOf(UsageError);
