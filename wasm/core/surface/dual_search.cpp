@@ -65,11 +65,7 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
   }
   face_slot_.assign(nf, -1);
   edge_slot_.assign(graph_.edges, -1);
-  if (!mesh.positions.empty()) {
-    Vec3 lo = mesh.positions[0], hi = lo;
-    for (const Vec3& p : mesh.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    origin_ = (lo + hi) / 2;
-  }
+  origin_ = mesh.centre;
   centroids_.resize(nf);
   for (int f = 0; f < nf; ++f) {
     const auto& t = mesh.triangles[f];

@@ -145,7 +145,7 @@ class DualSearch {
   std::vector<int> sources_, targets_;  // faces holding a and b
   double last_length_ = 0;
   // The search's positions (node records, windows, centroids) are in single precision relative to
-  // `origin_`, the centre of the mesh's bounding box: a float keeps 7 digits of a coordinate, which
+  // `origin_`, the centre of the mesh's bounding box (TriMesh::centre): a float keeps 7 digits of a coordinate, which
   // for a scan in georeferenced coordinates (millions of units away, a few units across) are not its
   // shape's. local(): a point of mesh space in those coordinates.
   Vec3 origin_ = Vec3::Zero();

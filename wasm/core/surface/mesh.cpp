@@ -192,11 +192,13 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
       std::sort(t.begin(), t.end());
       sorted.push_back({t, f});
     }
-    std::sort(sorted.begin(), sorted.end());
-    for (size_t i = 1; i < sorted.size(); ++i) {
-      if (sorted[i].first != sorted[i - 1].first) continue;
-      repeats[sorted[i].second] =
-          repeats[sorted[i - 1].second] >= 0 ? repeats[sorted[i - 1].second] : sorted[i - 1].second;
+    std::sort(sorted.begin(), sorted.end());  // (a group's first entry: its first face in the file)
+    for (size_t i = 1, first = 0; i < sorted.size(); ++i) {
+      if (sorted[i].first != sorted[first].first) {
+        first = i;
+        continue;
+      }
+      repeats[sorted[i].second] = sorted[first].second;
       ++report.duplicate_faces;
     }
   }
@@ -362,6 +364,7 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
     hi = hi.cwiseMax(p);
   }
   mesh.scale = std::max((hi - lo).norm(), 1e-300);
+  mesh.centre = (lo + hi) / 2;
   order_for_locality(mesh, lo, (hi - lo).maxCoeff());
   for (int f = 0; f < num_faces; ++f)
     if (repeats[f] >= 0) mesh.duplicates.emplace_back(mesh.mesh_face[f], mesh.mesh_face[repeats[f]]);

@@ -85,7 +85,8 @@ struct TriMesh {
   // (duplicate, first) mesh faces, by duplicate: a face on the same vertices as an earlier one in the
   // file (to_mesh_point moves points from the duplicate to the first, which alone has neighbours).
   std::vector<std::pair<int, int>> duplicates;
-  double scale = 1;  // bounding-box diagonal
+  double scale = 1;            // bounding-box diagonal
+  Vec3 centre = Vec3::Zero();  // bounding-box centre
   MeshReport report;
 };
 
