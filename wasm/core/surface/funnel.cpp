@@ -113,11 +113,29 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
     chain[--lo] = {L, lv, i};
     return Made::kGo;
   };
+  // Consecutive portals share an end point (the strip turns about one vertex at a time). Added
+  // again, that point would pop itself off its chain's end and come back (or it is the apex, and
+  // is skipped): only the portal it bounds last is renewed. Half the end points, a third of the
+  // funnel's instructions on the folded body of BENCHMARKS.md (the same apices).
+  const Vec2* last_right = nullptr;
+  const Vec2* last_left = nullptr;
   for (int i = apices.back().portal + 1; i <= n; ++i) {
-    Made m;
+    Made m = Made::kGo;
     if (i < n) {
-      m = add_right(u.right(i), u.portals[i].right_vertex, i);
-      if (m == Made::kGo) m = add_left(u.left(i), u.portals[i].left_vertex, i);
+      const Vec2 &R = u.right(i), &L = u.left(i);
+      if (last_right && R == *last_right) {
+        if (hi > ap) chain[hi].portal = i;
+      } else {
+        m = add_right(R, u.portals[i].right_vertex, i);
+      }
+      if (m == Made::kGo) {
+        if (last_left && L == *last_left) {
+          if (lo < ap) chain[lo].portal = i;
+        } else {
+          m = add_left(L, u.portals[i].left_vertex, i);
+        }
+      }
+      last_right = &R, last_left = &L;
     } else {  // the target: the path to it is the apex's right chain once it joins it
       if (target == chain[ap].pos) break;
       m = add_right(target, -1, n);
@@ -130,6 +148,7 @@ void funnel(const UnfoldedStrip& u, const Vec2& source, const Vec2& target, std:
     if (m == Made::kJumped) {
       restart();
       i = apices.back().portal;
+      last_right = last_left = nullptr;
     }
   }
   if (apices.back().pos == target && apices.size() > 1) apices.pop_back();
