@@ -1,6 +1,6 @@
 // "Surface at scale" (issue 17; `node bench/run.mjs --only=surface-scale`): curves and shortest paths
-// on shapes where points close in space are far apart on the surface (a coil, a body with folded
-// limbs), on a noisy scan-like surface, and on the shared meshes they were tuned on; with and without
+// on shapes where points close in space are far apart on the surface (a coil, a knotted tube, a body
+// with folded limbs), on a noisy scan-like surface, and on the shared meshes they were tuned on; with and without
 // the search's landmarks (wasm in Node, the same polygons and pairs in the same run), with the work
 // counters of every curve, and shortest paths against geometry-central's flipOut (potpourri3d,
 // native; benchmark only) and the exact polyhedral distance (MMP, native).
@@ -19,6 +19,7 @@ export const SCALE_MESHES = [
   { name: 'spot_loop2_369k', shared: 'spot_loop2_369k.ply' },
   { name: 'noisy spot_loop2_369k', shape: 'noisy', from: 'spot_loop2_369k.ply', what: 'spot_loop2_369k, vertices moved along their normals by ±0.3 mean edge lengths' },
   { name: 'coil', shape: 'coil', what: 'a tube coiled into 8 turns (helix radius 1, tube radius 0.12, pitch 0.3), 4000 × 48 quads split in two' },
+  { name: 'knotted tube', shape: 'knot', what: 'a tube (radius 0.25) along a (2,3) torus knot, cut open and capped, 3000 × 24 quads split in two: its faces are six times longer around the tube than along it (the coil\'s are about square)' },
   { name: 'folded body', shape: 'folded', what: 'a body (radius 0.5) whose two limbs (radius 0.12) bend back and lie along it 0.04 away, 3000 × 64 quads and end caps, with 150 specks of debris as a scan has (single triangles 0.2% of the diagonal across, scattered in its box; the Stanford dragon has 150 beside its body)' },
 ];
 

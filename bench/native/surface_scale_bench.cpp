@@ -1,10 +1,11 @@
 // Native side of the "surface at scale" benchmark (bench/surface-scale.mjs runs it):
 //
-//   surface_scale_bench shape coil|folded|noisy|noisy-cube|small-noisy-coil|small-noisy-folded <out.obj>
+//   surface_scale_bench shape coil|knot|folded|noisy|noisy-cube|small-noisy-coil|small-noisy-folded <out.obj>
 //                             [<in mesh> for noisy]
 //       writes a generated mesh (tests/native/surface/test_meshes.h: the same shapes the tests use,
 //       at benchmark size): the coil (8 turns, tube radius 0.12, pitch 0.3, 4000 x 48 quads,
-//       384k triangles), a body with two limbs folded against it (3000 x 64 quads, 384k triangles,
+//       384k triangles), a tube along a torus knot (3000 x 24 quads, 144k triangles, faces six times
+//       longer around than along), a body with two limbs folded against it (3000 x 64 quads, 384k triangles,
 //       and 150 specks of debris),
 //       or <in mesh> with normal noise of +-0.3 mean edge lengths (seed 3).
 //   surface_scale_bench exact <mesh>   (pairs "a b" of file vertex indices on stdin)
@@ -72,6 +73,7 @@ static int write_obj(const Arrays& a, const std::string& path) {
 static int shape(int argc, char** argv) {
   const std::string kind = argv[2], out = argv[3];
   if (kind == "coil") return write_obj(testing::coil(4000, 48), out);
+  if (kind == "knot") return write_obj(testing::knot_tube(3000, 24), out);
   // With specks of debris, as a scan of a folded creature has (the Stanford dragon: 150).
   if (kind == "folded") return write_obj(testing::with_debris(testing::folded_body(3000, 64), 150, 3, 0.002), out);
   if (kind == "noisy" && argc > 4) return write_obj(testing::noisy(testing::read_mesh(argv[4]), 0.3, 3), out);
@@ -273,7 +275,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fprintf(stderr,
-               "usage: surface_scale_bench shape coil|folded|noisy|noisy-cube|small-noisy-coil|small-noisy-folded "
+               "usage: surface_scale_bench shape coil|knot|folded|noisy|noisy-cube|small-noisy-coil|small-noisy-folded "
                "<out.obj> [<in mesh>]\n"
                "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
                "       surface_scale_bench search <mesh> <pairs> <seed>\n"

@@ -1,5 +1,6 @@
 // Small meshes with known geometry for the surface tests: planar grids, a cube, a cylinder, tubes
-// (a coil, a body with folded limbs), noise, and a reader for the shared OBJ/PLY test data.
+// (a coil, a knotted tube, a body with folded limbs), noise, and a reader for the shared OBJ/PLY
+// test data.
 #pragma once
 
 #include "../reference/exact_geodesic.h"
@@ -172,6 +173,19 @@ inline Arrays coil(int along, int around, int turns = 8, double radius = 0.12, d
   };
   return tube(
       centre, [&](double) { return radius; }, along, around, false);
+}
+
+// A tube along a (2,3) torus knot (the knot's centre circle of radius 2, its loops of radius 1),
+// tube radius 0.25, cut open and closed by caps: a tube that winds round itself (its centre line
+// 1.7 from itself where the strands cross), of rings much closer along it than its vertices around
+// it (at 3000 x 24, faces 0.011 along and 0.065 around; the coil's are about square).
+inline Arrays knot_tube(int along, int around) {
+  auto centre = [](double s) {
+    const double t = 2 * kPi * s, r = std::cos(3 * t) + 2;
+    return Vec3(r * std::cos(2 * t), r * std::sin(2 * t), -std::sin(3 * t));
+  };
+  // (cut just short of closing, so that the caps do not meet)
+  return tube([&](double s) { return centre(0.995 * s); }, [](double) { return 0.25; }, along, around, true);
 }
 
 // A body with limbs folded against it: one closed tube whose middle is a fat body (radius 0.5,

@@ -15,7 +15,7 @@
 // touch, and must meet 5°.
 // The angles are measured on the traced polyline (the segments tracing actually produced). The
 // 369k-triangle spot_loop2 is left to the benchmarks: it alone takes ~14 s here. Besides the shared
-// meshes: a coil, a body with folded limbs and a noisy spot (tests/native/surface/test_meshes.h).
+// meshes: a coil, a knotted tube, a body with folded limbs and a noisy spot (tests/native/surface/test_meshes.h).
 #include "common/geometry.h"
 #include "surface/curves.h"
 #include "surface/tangent.h"
@@ -188,6 +188,7 @@ TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
   for (const char* name : meshes)
     inputs.emplace_back(name, testing::read_mesh(testing::shared_data(std::string("meshes/") + name)));
   inputs.emplace_back("coil (8 turns)", testing::coil(800, 16));
+  inputs.emplace_back("knotted tube", testing::knot_tube(1200, 12));
   inputs.emplace_back("folded body, debris", testing::with_debris(testing::folded_body(600, 24), 40, 3, 0.002));
   inputs.emplace_back("noisy spot",
                       testing::noisy(testing::read_mesh(testing::shared_data("meshes/spot.obj")), 0.3, 3));
