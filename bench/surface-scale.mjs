@@ -325,6 +325,45 @@ that they bound the surface distance from below and keep the search exact): the 
 split quads (the bound recovers 70% and saves 20% of the nodes) and 108-220 on the dragon's slivers (it recovers
 nothing).`;
 
+const EVENING_NOTE = `Later on 2026-12-03 (wasm/core/surface/funnel.cpp). Consecutive portals of a strip share an end point (the
+strip turns about one vertex at a time), and the funnel added it again, only to pop it off its chain's end and push
+it back: now it renews the portal that point bounds last. The same apices; native instructions of random curves
+0.86x on the folded body (the funnel's 3.72 G -> 2.58 G) and 0.93x on the coil; in one wasm module against the tree
+before (bench:ab, 100 curves, best of 2), per-curve medians 0.957x on the folded body, 0.966x spot_loop2_369k, 0.973x
+the noisy spot, 0.987x the coil, 0.991x nefertiti; no curve changed. (The table above comes from a run that evening
+whose nefertiti and spot_loop2_369k medians are 13% and 21% above the morning's record for the code before this change;
+native runs of the same curves took the same time as in the morning, and bench:ab's own medians of both trees rose
+by 3-6% within the hour: the VM's wasm speed drifts between runs, and bench:ab's ratios are what compare code.)
+
+The knotted tube came in that day as a mesh nobody had tuned on (100% valid in all four schemes, 40 curves each),
+and its curves are the slowest per triangle: a side runs ~4,000 faces (two per ring, rings 0.011 apart) and takes
+about one flip per face. Where the straightening's time goes, by the flips a pass keeps (native, 40 random sides
+each; ms and passes): knotted tube: none kept 75 ms (873 passes), 1-3 flips 38 (657), 4-15 81 (1210), 16 or more
+104 (827 passes, 54k flips); coil: 17 (434), 20 (519), 22 (456), 176 (951, 132k flips); folded body: 20 (329), 20
+(638), 83 (1727), 42 (419). On the coil the passes of many flips carry three quarters of it: the flips are the work,
+and only an initial strip nearer the geodesic would cut them. On the folded body and the knot the passes of a few
+flips weigh as much, each laying out and funnelling most of the strip. A pass that keeps nothing is mostly one whose
+flips together did not shorten the path and whose largest turn's zipper or chord alone did not either (the knot:
+709 zippers and 104 chords of its 873).
+
+Measured and dropped that evening (native, build/exp harnesses): a zipper or chord that fails alone giving way to its
+vertex's semi-star in the same pass, so that those passes keep a flip: 3% fewer passes on the knot but 10% more
+instructions (a third layout and funnel in those passes), 0.5% more on the folded body. The funnel run only across
+each change, from the known apex before it to the known apex after it as its target, kept where the path still bends
+round both (else widened by an apex): the same apices, but more portals walked than the splice's jumps (20 coil
+curves 7.8 M -> 9.7 M, 30 folded-body curves 20.3 M -> 23.1 M); where the apices are sparse (10-20 on a 3,000-face
+side of the folded body's tail) a pass's changes lie hundreds of portals from the apices around them, and either way
+a funnel walks 87% of the strip. Chords across a run of bends at flat vertices (angle sum 2π within 1e-9: the folded
+body's limbs), from the nearest bend at a vertex that is not flat to the next: 12.5% fewer passes and 25% fewer
+flips, but 22% more faces walked, 0.96x the instructions; counting vertices within 3e-4 to 3e-3 of flat as flat, the
+walks grow 1.2 to 5 times. Ending the straightening when 16 passes shorten the path by less than ε of its length:
+1e-6 takes 0.7% of the passes off (the tails gain more than that), 1e-5 takes 7% and leaves the curves 0.1% longer.
+One search-graph node per edge for shortest paths (steiner = 1): refined searches 2-2.5 times faster on the large
+meshes (the coil's pairs 199 -> 79 ms each natively, still 1.6 times flipOut's 49; slower below 10k triangles), but
+less accurate: the Stanford bunny 99% within 0.5% (worst 1.0060 against 1.0004 at 2), the noisy spot's worst 1.0045
+(1.0015), mountain's 1.0039 (1.0011). The greedy dual strip straightened as the shortest path (what curve tracing
+does): 12-18 times faster, but 68% (nefertiti) and 80% (coil) of the pairs within 0.5%.`;
+
 const f = (x, d = 2) => (x == null || Number.isNaN(x) ? '–' : x.toFixed(d));
 const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1)}%`);
 
@@ -402,6 +441,8 @@ ${CURVES_NOTE}
 ${SLIDES_NOTE}
 
 ${SCANS_NOTE}
+
+${EVENING_NOTE}
 
 Shortest paths between random vertex pairs (${m[0]?.geodesics.sources} sources × ${m[0]?.geodesics.targets} targets per mesh), ours
 (SurfaceMesh.shortestPath: refined search graph, funnel, flips; wasm, timed inside the module) against
