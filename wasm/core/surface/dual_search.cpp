@@ -180,6 +180,8 @@ struct Window {
   // Around e's ends: the shorter way to p of f by A or B (a vertex of f, which sees all of f), and
   // which (0: A, 1: B); infinity when the window reaches neither.
   float around(const Eigen::Vector3f& p, int& end) const {
+    end = 0;
+    if (to_a == std::numeric_limits<float>::infinity() && to_b == to_a) return to_a;  // (most windows)
     const float via_a = to_a + (p - a).norm(), via_b = to_b + (p - (a + length * x)).norm();
     end = via_b < via_a ? 1 : 0;
     return std::min(via_a, via_b);
@@ -395,7 +397,6 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
           const auto [first, end] = graph_.node_range(other);
           const int count = end - first;
           const int r0 = visit(first, other);
-          const float other_length = edge_length(other);  // (the stretch a vertex or u sees: all of it)
           for (int rn = r0; rn < r0 + count; ++rn) {
             Visit& v = visits_[rn];
             if (v.closed) continue;
@@ -411,9 +412,9 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
               window.pass_on(mesh_, origin_, graph_.edge_halfedge[other], v);
             } else if (bend <= d) {  // round A or B, which sees the whole of the other edges of f
               v.source = end == 0 ? window.a : Eigen::Vector3f(window.a + window.length * window.x);
-              v.source_dist = end == 0 ? window.to_a : window.to_b, v.lo = 0, v.hi = other_length;
+              v.source_dist = end == 0 ? window.to_a : window.to_b, v.lo = 0, v.hi = edge_length(other);
             } else {  // from u itself, likewise
-              v.source = pu, v.source_dist = du, v.lo = 0, v.hi = other_length;
+              v.source = pu, v.source_dist = du, v.lo = 0, v.hi = edge_length(other);
             }
             queue.push(key(v), rn);
           }
