@@ -181,7 +181,7 @@ struct Window {
   // which (0: A, 1: B); infinity when the window reaches neither.
   float around(const Eigen::Vector3f& p, int& end) const {
     end = 0;
-    if (to_a == std::numeric_limits<float>::infinity() && to_b == to_a) return to_a;  // (most windows)
+    if (to_a == std::numeric_limits<float>::infinity() && to_b == to_a) return to_a;  // (no need to measure)
     const float via_a = to_a + (p - a).norm(), via_b = to_b + (p - (a + length * x)).norm();
     end = via_b < via_a ? 1 : 0;
     return std::min(via_a, via_b);
