@@ -330,10 +330,13 @@ strip turns about one vertex at a time), and the funnel added it again, only to 
 it back: now it renews the portal that point bounds last. The same apices; native instructions of random curves
 0.86x on the folded body (the funnel's 3.72 G -> 2.58 G) and 0.93x on the coil; in one wasm module against the tree
 before (bench:ab, 100 curves, best of 2), per-curve medians 0.957x on the folded body, 0.966x spot_loop2_369k, 0.973x
-the noisy spot, 0.987x the coil, 0.991x nefertiti; no curve changed. (The table above comes from a run that evening
-whose nefertiti and spot_loop2_369k medians are 13% and 21% above the morning's record for the code before this change;
-native runs of the same curves took the same time as in the morning, and bench:ab's own medians of both trees rose
-by 3-6% within the hour: the VM's wasm speed drifts between runs, and bench:ab's ratios are what compare code.)
+the noisy spot, 0.987x the coil, 0.991x nefertiti; no curve changed. (Two runs of the section that evening, an hour apart and on
+the same code but for the refined search below, gave nefertiti 3.18 and 2.61 ms, spot_loop2_369k 7.03 and 6.07 ms,
+the coil 34.7 and 27.3 ms, and flipOut's times moved alike: the VM's speed drifts between runs, and bench:ab's
+ratios are what compare code.)
+The refined search (shortest paths) likewise measures an edge's length only for the records that take the whole
+edge as their stretch, and the way round a window's ends only when the window reaches one: the same nodes and
+paths, native instructions 0.93x on the knotted tube's pairs and 0.915x on the coil's.
 
 The knotted tube came in that day as a mesh nobody had tuned on (100% valid in all four schemes, 40 curves each),
 and its curves are the slowest per triangle: a side runs ~4,000 faces (two per ring, rings 0.011 apart) and takes
