@@ -182,13 +182,19 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
   // ---- Faces that repeat an earlier face's vertices (first occurrence in file order wins) ---------
   // A double-sided mesh lists every face twice (once per winding); left in, the copies would give
   // every edge four faces, and the mesh would fall apart into single faces.
+  // Faces left out of the adjacency, the fans and the boundary: degenerate and repeated ones.
+  std::vector<uint8_t> isolated(num_faces, 0);
   std::vector<int> repeats(num_faces, -1);  // the earlier face a face repeats, or -1
   {
     std::vector<std::pair<std::array<int, 3>, int>> sorted;
     sorted.reserve(num_faces);
     for (int f = 0; f < num_faces; ++f) {
       std::array<int, 3> t = mesh.triangles[f];
-      if (is_degenerate(t)) continue;
+      if (is_degenerate(t)) {
+        isolated[f] = 1;
+        ++report.degenerate_faces;
+        continue;
+      }
       std::sort(t.begin(), t.end());
       sorted.push_back({t, f});
     }
@@ -199,11 +205,10 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
         continue;
       }
       repeats[sorted[i].second] = sorted[first].second;
+      isolated[sorted[i].second] = 1;
       ++report.duplicate_faces;
     }
   }
-  // Faces left out of the adjacency, the fans and the boundary: degenerate and repeated ones.
-  auto isolated = [&](int f) { return repeats[f] >= 0 || is_degenerate(mesh.triangles[f]); };
 
   // ---- Adjacency by matching undirected edges -----------------------------------------------------
   mesh.adjacency.assign(num_faces, {-1, -1, -1});
@@ -212,8 +217,7 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
     half_edges.reserve(3 * static_cast<size_t>(num_faces));
     for (int f = 0; f < num_faces; ++f) {
       const auto& t = mesh.triangles[f];
-      if (is_degenerate(t)) ++report.degenerate_faces;
-      if (isolated(f)) continue;
+      if (isolated[f]) continue;
       for (int k = 0; k < 3; ++k) half_edges.push_back({edge_key(t[k], t[(k + 1) % 3]), f, static_cast<int8_t>(k)});
     }
     std::sort(half_edges.begin(), half_edges.end(),
@@ -276,13 +280,13 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
   {
     std::vector<int> offsets(nv + 1, 0);
     for (int f = 0; f < num_faces; ++f)
-      if (!isolated(f))
+      if (!isolated[f])
         for (int v : mesh.triangles[f]) ++offsets[v + 1];
     for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
     std::vector<int> incident(offsets[nv]);
     std::vector<int> fill(offsets.begin(), offsets.end() - 1);
     for (int f = 0; f < num_faces; ++f)
-      if (!isolated(f))
+      if (!isolated[f])
         for (int v : mesh.triangles[f]) incident[fill[v]++] = f;
 
     mesh.vertex_face.assign(nv, -1);
@@ -338,7 +342,7 @@ MeshStatus build_mesh(const double* positions, int num_vertices, const int* tria
   {
     std::vector<std::pair<int, int>> boundary;  // (from, to) along the winding
     for (int f = 0; f < num_faces; ++f) {
-      if (isolated(f)) continue;
+      if (isolated[f]) continue;
       for (int k = 0; k < 3; ++k)
         if (mesh.adjacency[f][k] < 0) boundary.emplace_back(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]);
     }
