@@ -85,6 +85,8 @@ class DualSearch {
   // ---- Queries ----
   const DualGraph& graph() const { return graph_; }
   const Landmarks& landmarks() const { return landmarks_; }
+  // The faces' centroids (single precision, relative to a point of the mesh's box: differences only).
+  const std::vector<Eigen::Vector3f>& centroids() const { return centroids_; }
   // Bytes held: the graph, the search records, the face centroids and the landmark distances.
   size_t bytes() const;
 

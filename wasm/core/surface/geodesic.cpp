@@ -1,6 +1,7 @@
 #include "surface/geodesic.h"
 
 #include <algorithm>
+#include <limits>
 #include <tuple>
 
 namespace splinekit::surface {
@@ -25,14 +26,45 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     path = GeodesicPath{a, b, {}, {}, {}};
     return false;
   }
-  const int reverse_faces = straightener_.options.dual_reverse_search_faces;
-  if (graph == SearchGraph::kDual && reverse_faces > 0 && strip_.size() >= static_cast<size_t>(reverse_faces) &&
-      search_.initial_strip(b, a, back_, stats, graph)) {
-    std::reverse(back_.begin(), back_.end());
-    if (funnel_length(a, b, back_) < funnel_length(a, b, strip_))
-      strip_.swap(back_), search_length_ = search_.last_length();
+  const ShortestPathOptions& options = straightener_.options;
+  const int reverse_faces = options.dual_reverse_search_faces;
+  if (graph == SearchGraph::kDual && reverse_faces > 0 && strip_.size() >= static_cast<size_t>(reverse_faces)) {
+    // A long greedy strip: the other candidates, the one whose funnel path is shortest straightened.
+    double shortest = funnel_length(a, b, strip_);
+    if (search_.initial_strip(b, a, back_, stats, graph)) {
+      std::reverse(back_.begin(), back_.end());
+      const double length = funnel_length(a, b, back_);
+      if (length < shortest) strip_.swap(back_), search_length_ = search_.last_length(), shortest = length;
+    }
+    if (options.landmark_descent && descent_strip(a, b, shortest, back_, stats) &&
+        funnel_length(a, b, back_) < shortest)
+      strip_.swap(back_), search_length_ = std::numeric_limits<double>::quiet_NaN();
   }
   straightener_.straighten(a, b, strip_, path, stats);
+  return true;
+}
+
+bool GeodesicSolver::descent_strip(const MeshPoint& a, const MeshPoint& b, double shortest, std::vector<int>& strip,
+                                   PathStats* stats) {
+  const Landmarks& marks = search_.landmarks();
+  const int l = marks.best_between(a.face, b.face);
+  if (l < 0) return false;
+  // Down from the end farther from the landmark (the other lies on the way to it, as far as the
+  // bound tells), to the other end's level; the greedy search from there to that end. `shortest`:
+  // the funnel length of the best strip so far.
+  const bool from_a = marks.value(a.face, l) > marks.value(b.face, l);
+  const MeshPoint& to = from_a ? b : a;
+  marks.descend(mesh_, search_.centroids(), l, (from_a ? a : b).face, marks.value(to.face, l), strip);
+  const MeshPoint level{strip.back(), Vec2(1.0 / 3, 1.0 / 3)};
+  // Level with `to` but far from it: the landmark's way passes elsewhere (a fold, a limb), and the
+  // search on would be long for a candidate that seldom wins.
+  if ((eval_position(mesh_, level) - eval_position(mesh_, to)).norm() >
+      straightener_.options.landmark_descent_gap * shortest)
+    return false;
+  if (!search_.initial_strip(level, to, tail_, stats, SearchGraph::kDual)) return false;
+  strip.insert(strip.end(), tail_.begin() + 1, tail_.end());
+  remove_loops(strip, search_.face_marks());
+  if (!from_a) std::reverse(strip.begin(), strip.end());
   return true;
 }
 

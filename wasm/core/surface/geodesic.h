@@ -40,7 +40,9 @@ class GeodesicSolver {
   // ---- Paths ----
   // The locally shortest path from a to b (mesh space). Always succeeds on a connected mesh; when b
   // cannot be reached (another component) the path is empty (strip empty) and false is returned.
-  // With the kDual graph, a long strip is also searched from b to a (dual_reverse_search_faces).
+  // With the kDual graph, a long strip is also searched from b to a (dual_reverse_search_faces) and
+  // found down a landmark's distance field (landmark_descent), and the candidate whose funnel path is
+  // shortest is straightened.
   bool shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats = nullptr,
                      SearchGraph graph = SearchGraph::kRefined);
 
@@ -52,7 +54,7 @@ class GeodesicSolver {
     return reached;
   }
   // The search-graph length of the last initial_strip's (or searched shortest_path's) path (of a
-  // kDual path searched both ways, the strip's that was straightened).
+  // kDual path with candidates, the strip's that was straightened; NaN for the landmark descent's).
   double last_search_length() const { return search_length_; }
   // Phases (ii)+(iii) on a given strip (consecutive faces adjacent; a on strip.front(), b on
   // strip.back()); `strip` becomes the straightened path's.
@@ -67,6 +69,11 @@ class GeodesicSolver {
   bool straighten_through(const std::vector<GeodesicPath>& pieces, GeodesicPath& path, PathStats* stats = nullptr);
 
  private:
+  // The landmark descent's candidate strip from a to b (ShortestPathOptions::landmark_descent), given
+  // the funnel length of the best candidate so far: false when no landmark tells the ends apart, the
+  // descent ends too far from the other end (landmark_descent_gap) or the search on finds no way.
+  bool descent_strip(const MeshPoint& a, const MeshPoint& b, double shortest, std::vector<int>& strip,
+                     PathStats* stats);
   // The length of the funnel path from a to b inside `strip` (phase (ii) alone).
   double funnel_length(const MeshPoint& a, const MeshPoint& b, const std::vector<int>& strip);
 
@@ -74,7 +81,8 @@ class GeodesicSolver {
   DualSearch search_;
   Straightener straightener_;
   std::vector<int> strip_;    // the strip between the phases
-  std::vector<int> back_;     // the kDual strip searched from b to a
+  std::vector<int> back_;     // a long kDual strip's other candidate (searched from b to a, or the descent's)
+  std::vector<int> tail_;     // the descent candidate's search after the descent
   std::vector<int> fan_;      // straighten_through's: the faces around a vertex where two pieces meet
   double search_length_ = 0;  // last_search_length()
 };

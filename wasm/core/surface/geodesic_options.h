@@ -28,6 +28,18 @@ struct ShortestPathOptions {
   // funnel path is shorter is straightened (0: never): the greedy search's strip depends on the end
   // it starts from, and the straightening's work grows with the region between strip and geodesic.
   int dual_reverse_search_faces = 512;
+  // Such a strip also gets a candidate that follows the surface's shortest way (needs landmarks): down
+  // the distance field of the landmark that bounds the distance between the ends best, from the end
+  // farther from it to where the field is level with the other end, then the greedy search on to that
+  // end (Landmarks::descend). On a coiled tube the geodesic between far points runs along the tube's
+  // inner side, which the dual-graph distances from far away follow, while the greedy strip keeps to
+  // the side it started on and the flips sweep the whole band between (BENCHMARKS.md, "Surface at
+  // scale", Landmark descent).
+  bool landmark_descent = true;
+  // ... unless the descent ends farther than this share of the best candidate's funnel length (in space)
+  // from the other end: there the landmark's way passes elsewhere (on the folded body, along another
+  // limb; 2026-12-04: without it, its curves took 1.1-1.2 times as long, none shorter).
+  double landmark_descent_gap = 0.05;
   // Landmark lower bounds (landmarks.h) in components of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
   // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There

@@ -120,6 +120,35 @@ Landmarks::Landmarks(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& ce
   hi_.assign(count_, 0);
 }
 
+int Landmarks::best_between(int f, int g) const {
+  int best = -1, most = 0;
+  for (int l = 0; l < count_; ++l) {
+    const int a = value(f, l), b = value(g, l);
+    if (a != kUnreached && b != kUnreached && std::abs(a - b) > most) most = std::abs(a - b), best = l;
+  }
+  return best;
+}
+
+void Landmarks::descend(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& centroids, int l, int f, int stop,
+                        std::vector<int>& faces) const {
+  faces.assign(1, f);
+  // Each step to the neighbour whose value falls most per length of the link: the tree's parent,
+  // whose distance falls by the whole link (any other's by less), as far as the rounding tells.
+  // (Values fall strictly at every step: it ends, after at most as many steps as the value.)
+  for (int here = value(f, l); here > stop;) {
+    int next = -1;
+    double steepest = 0;
+    for (int g : mesh.adjacency[f]) {
+      if (g < 0 || value(g, l) >= here) continue;
+      const double slope = (here - value(g, l)) / std::max(1e-30, double((centroids[g] - centroids[f]).norm()));
+      if (slope > steepest) steepest = slope, next = g;
+    }
+    if (next < 0) return;
+    faces.push_back(f = next);
+    here = value(f, l);
+  }
+}
+
 void Landmarks::set_target(const int* faces, int n) {
   for (int l = 0; l < count_; ++l) {
     uint16_t lo = kUnreached, hi = 0;

@@ -58,6 +58,14 @@ class Landmarks {
     }
     return best * step_;
   }
+  // The landmark whose values at faces f and g differ most (the one that bounds their distance best),
+  // -1 when none reached both or all agree.
+  int best_between(int f, int g) const;
+  // A path down landmark l's distance field from face f, along the dual graph's shortest-path tree
+  // towards the landmark (faces' centroids `centroids`, as built): to a face of value `stop` or less
+  // (or one with no smaller neighbour). `faces` gets f and the faces passed, consecutive ones adjacent.
+  void descend(const TriMesh& mesh, const std::vector<Eigen::Vector3f>& centroids, int l, int f, int stop,
+               std::vector<int>& faces) const;
   // A target: a set of faces (any of which ends a path), as the interval of its faces' values per
   // landmark. Set once per search, then bound() per node.
   void set_target(const int* faces, int n);
