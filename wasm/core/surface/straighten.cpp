@@ -43,11 +43,16 @@ void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vecto
 }
 
 void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip) {
+  frozen_.clear(), frozen_cos_.clear(), no_chain_.clear(), no_chord_.clear();
+  // The strip laid out last for these end points, no pass since (a candidate measured before it was
+  // chosen, GeodesicSolver::shortest_path): its layout and funnel path stand.
+  auto same = [](const MeshPoint& x, const MeshPoint& y) { return x.face == y.face && x.uv == y.uv; };
+  if (laid_ && same(start, start_) && same(end, end_) && strip == strip_) return;
   start_ = start, end_ = end;
   strip_.assign(strip.begin(), strip.end());
-  frozen_.clear(), frozen_cos_.clear(), no_chain_.clear(), no_chord_.clear();
   unfold_strip(mesh_, strip_, unfolded_);
   length_ = shorten(unfolded_, made_, apices_, nullptr);
+  laid_ = true;
 }
 
 double Straightener::shorten(const UnfoldedStrip& u, std::vector<Apex>& raw, std::vector<Apex>& out,
@@ -144,6 +149,7 @@ void VertexSet::clear() {
 // =================================================================================================
 
 bool Straightener::pass(PathStats* stats) {
+  laid_ = false;
   const int n = static_cast<int>(strip_.size());
   // Every removable reflex vertex, largest turn first, with runs that do not touch each other.
   order_.clear();

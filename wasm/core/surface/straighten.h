@@ -204,6 +204,7 @@ class Straightener {
   UnfoldedStrip unfolded_;
   std::vector<Apex> apices_, made_;
   double length_ = 0;
+  bool laid_ = false;  // the above are begin()'s, no pass since
   // The strip being tried, likewise (laid out from the strip's by `apply`).
   std::vector<int> trial_;
   UnfoldedStrip trial_unfolded_;
