@@ -325,6 +325,35 @@ that they bound the surface distance from below and keep the search exact): the 
 split quads (the bound recovers 70% and saves 20% of the nodes) and 108-220 on the dragon's slivers (it recovers
 nothing).`;
 
+const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
+went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis
+is 0.88, one less the tube radius, over all of the path but ramps of about a twentieth of it at each end: a path
+there is 12% shorter per turn), while the greedy strip's funnel path keeps to the side it started on (0.90 to 1.12),
+and the flips swept the whole band between, about two per strip face. The dual-graph distances from a far landmark
+follow the inner side, so a long greedy strip (dual_reverse_search_faces, 512 faces) gets a third candidate: down
+the distance field of the landmark that bounds the ends' distance best, from the end farther from it, each step to
+the neighbour whose value falls most per length of the link (the shortest-path tree's parent), until level with the
+other end, then the greedy search on to it; the candidate whose funnel path is shortest is straightened. Alone
+(native, 27 long coil sides) it straightened with 120838 -> 44193 flips in 288.7 -> 115.8 ms, the paths 0.2%
+shorter in total, but it lost on the knotted tube (1.4x the time; its faces, six times longer around than along,
+bend the dual graph's distances) and on the folded body (1.3x: the landmark's way passes along another limb). As a
+candidate, and given up when its descent ends farther from the other end than 5% of the best candidate's funnel
+length (landmark_descent_gap; without that the folded body's curves took 1.07-1.2 times as long, none shorter):
+native instructions of 15 random curves 0.65x on the coil, 0.93x on the knotted tube, 1.005x on the folded body,
+1.001x on spot_loop2_369k. In one wasm module against the tree before (bench:ab, 100 curves, best of 2): per-curve
+median 0.722x and total 0.664x on the coil (98 of 100 curves changed, mean length -0.11%), 0.986x / 0.920x on the
+knotted tube (-0.23%), 1.005x / 0.984x on the folded body (+0.11%), 1.006x / 1.004x on spot_loop2_369k (7 curves
+changed, mean length equal to 5 digits), 1.000x / 1.004x on the noisy spot (+0.06%), nefertiti unchanged (no side
+that long). Measured and dropped that day: candidates from 256 faces (1.02x the coil's instructions, 1.01x
+nefertiti's, whose curves came out 1% shorter); the side split at the midpoint of the forward and backward strips'
+points halfway along (a Z in place of an L, if the strips were an L and its mirror): 120838 -> 128765 flips, 7 of 27
+sides longer, the two strips being the same side of the tube. The tables above were run after it (2026-12-04, 15:10) on a
+VM slower than the day before's and drifting within the run: nefertiti and the folded body did the same work as in the
+record before (their counters are the same) in 1.23 and 1.6 times the time, and the folded body's shortest paths with
+and without landmarks, the same nodes and the same paths, took 13.8 and 11.4 s: its 1.02 against flipOut is that
+drift (0.83 the day before; the shortest paths' code did not change). bench:ab's ratios above are what compare the
+code; the coil's counters say what changed there (flips 11556 -> 2937 per curve, faces walked by chords 158k -> 67k).`;
+
 const EVENING_NOTE = `Later on 2026-12-03 (wasm/core/surface/funnel.cpp). Consecutive portals of a strip share an end point (the
 strip turns about one vertex at a time), and the funnel added it again, only to pop it off its chain's end and push
 it back: now it renews the portal that point bounds last. The same apices; native instructions of random curves
@@ -446,6 +475,8 @@ ${SLIDES_NOTE}
 ${SCANS_NOTE}
 
 ${EVENING_NOTE}
+
+${DESCENT_NOTE}
 
 Shortest paths between random vertex pairs (${m[0]?.geodesics.sources} sources × ${m[0]?.geodesics.targets} targets per mesh), ours
 (SurfaceMesh.shortestPath: refined search graph, funnel, flips; wasm, timed inside the module) against

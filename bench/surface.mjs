@@ -487,6 +487,12 @@ was set; the header says what each option does).
   1.00x on nefertiti (no side that long) and 1.07x on the noisy spot, whose sides straighten cheaply
   enough that the second search and layouts cost more than they save. 128, 256 and 1024 faces did
   about as well.
+- **landmark_descent = true, landmark_descent_gap = 0.05** (2026-12-04): such a strip also gets a
+  candidate down the distance field of the landmark that bounds the ends' distance best, from the far
+  end to the near end's level and the greedy search on, unless the descent ends farther from the near
+  end than 5% of the best candidate's funnel length. On the coil the geodesic runs along the tube's
+  inner side, which the greedy strip misses: random curves 0.66x the time in total (wasm, bench:ab),
+  0.92x on the knotted tube, others within 2% (section "Surface at scale", Landmark descent).
 - **landmarks = 8, landmark_weight = 2, refined_landmark_scale = 0, landmark_min_faces = 16384**
   (phase (i)'s landmark term, 2026-12-02, section "Surface at scale"). 8 landmarks take 16 bytes per
   triangle, what giving search records per edge rather than per node saved (18). Random whole-surface
