@@ -40,9 +40,9 @@ class GeodesicSolver {
   // ---- Paths ----
   // The locally shortest path from a to b (mesh space). Always succeeds on a connected mesh; when b
   // cannot be reached (another component) the path is empty (strip empty) and false is returned.
-  // With the kDual graph, a long strip is also searched from b to a (dual_reverse_search_faces) and
-  // found down a landmark's distance field (landmark_descent), and the candidate whose funnel path is
-  // shortest is straightened.
+  // With the kDual graph, a long strip is also found down a landmark's distance field
+  // (landmark_descent) and, unless that one's funnel path is shorter, searched from b to a
+  // (dual_reverse_search_faces); the candidate whose funnel path is shortest is straightened.
   bool shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats = nullptr,
                      SearchGraph graph = SearchGraph::kRefined);
 

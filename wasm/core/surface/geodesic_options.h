@@ -31,7 +31,8 @@ struct ShortestPathOptions {
   // Such a strip also gets a candidate that follows the surface's shortest way (needs landmarks): down
   // the distance field of the landmark that bounds the distance between the ends best, from the end
   // farther from it to where the field is level with the other end, then the greedy search on to that
-  // end (Landmarks::descend). On a coiled tube the geodesic between far points runs along the tube's
+  // end (Landmarks::descend); when it beats the forward strip, the search from the far end is left out.
+  // On a coiled tube the geodesic between far points runs along the tube's
   // inner side, which the dual-graph distances from far away follow, while the greedy strip keeps to
   // the side it started on and the flips sweep the whole band between (BENCHMARKS.md, "Surface at
   // scale", Landmark descent).
