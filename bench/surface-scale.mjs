@@ -352,7 +352,11 @@ VM slower than the day before's and drifting within the run: nefertiti and the f
 record before (their counters are the same) in 1.23 and 1.6 times the time, and the folded body's shortest paths with
 and without landmarks, the same nodes and the same paths, took 13.8 and 11.4 s: its 1.02 against flipOut is that
 drift (0.83 the day before; the shortest paths' code did not change). bench:ab's ratios above are what compare the
-code; the coil's counters say what changed there (flips 11556 -> 2937 per curve, faces walked by chords 158k -> 67k).`;
+code; the coil's counters say what changed there (flips 11556 -> 2937 per curve, faces walked by chords 158k -> 67k). Later that day the descent's candidate came first, and the search from the far end is left out when it
+beats the forward strip (not in the tables above): bench:ab against the tree before, per-curve median / total
+0.861x / 0.866x on the coil (25 of 100 curves changed, mean length equal to 4 digits), 0.958x / 0.957x on the
+knotted tube (mean length +0.20%), 0.978x / 0.950x on the folded body (-0.13%), 0.992x / 0.999x on
+spot_loop2_369k (3 curves changed).`;
 
 const EVENING_NOTE = `Later on 2026-12-03 (wasm/core/surface/funnel.cpp). Consecutive portals of a strip share an end point (the
 strip turns about one vertex at a time), and the funnel added it again, only to pop it off its chain's end and push

@@ -492,7 +492,9 @@ was set; the header says what each option does).
   end to the near end's level and the greedy search on, unless the descent ends farther from the near
   end than 5% of the best candidate's funnel length. On the coil the geodesic runs along the tube's
   inner side, which the greedy strip misses: random curves 0.66x the time in total (wasm, bench:ab),
-  0.92x on the knotted tube, others within 2% (section "Surface at scale", Landmark descent).
+  0.92x on the knotted tube, others within 2% (section "Surface at scale", Landmark descent). When
+  its strip beats the forward one, the search from the far end is left out (a further 0.87x on the
+  coil, 0.96x on the knotted tube, 0.95x on the folded body).
 - **landmarks = 8, landmark_weight = 2, refined_landmark_scale = 0, landmark_min_faces = 16384**
   (phase (i)'s landmark term, 2026-12-02, section "Surface at scale"). 8 landmarks take 16 bytes per
   triangle, what giving search records per edge rather than per node saved (18). Random whole-surface
