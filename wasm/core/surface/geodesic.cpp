@@ -37,9 +37,8 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     bool descended = false;
     if (options.landmark_descent && descent_strip(a, b, shortest, back_, stats)) {
       const double length = funnel_length(a, b, back_);
-      if (length < shortest)
-        strip_.swap(back_), search_length_ = std::numeric_limits<double>::quiet_NaN(), shortest = length,
-                            descended = true;
+      descended = length < shortest;
+      if (descended) strip_.swap(back_), search_length_ = std::numeric_limits<double>::quiet_NaN(), shortest = length;
     }
     if (!descended && search_.initial_strip(b, a, back_, stats, graph)) {
       std::reverse(back_.begin(), back_.end());

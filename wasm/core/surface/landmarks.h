@@ -51,12 +51,8 @@ class Landmarks {
 
   // A lower bound on the dual-graph distance between faces f and g (0 when nothing is known).
   double bound_between(int f, int g) const {
-    int best = 0;
-    for (int l = 0; l < count_; ++l) {
-      const int a = value(f, l), b = value(g, l);
-      if (a != kUnreached && b != kUnreached) best = std::max(best, std::abs(a - b) - 1);
-    }
-    return best * step_;
+    const int l = best_between(f, g);
+    return l < 0 ? 0 : (std::abs(value(f, l) - value(g, l)) - 1) * step_;
   }
   // The landmark whose values at faces f and g differ most (the one that bounds their distance best),
   // -1 when none reached both or all agree.
