@@ -47,7 +47,7 @@ async function meshFile(root, data, spec) {
   return out;
 }
 
-const COUNTERS = ['searchedPaths', 'seededPaths', 'visitedNodes', 'stripFaces', 'passes', 'flips', 'chords', 'walkedFaces'];
+const COUNTERS = ['searchedPaths', 'seededPaths', 'visitedNodes', 'stripFaces', 'passes', 'passFaces', 'windows', 'flips', 'chords', 'walkedFaces'];
 
 function summary(ms, counters) {
   const out = { curves: ms.length, median_ms: percentile(ms, 0.5), p90_ms: percentile(ms, 0.9), p99_ms: percentile(ms, 0.99), max_ms: Math.max(...ms) };
@@ -420,8 +420,8 @@ export function surfaceScaleSection(s, { date, machine }) {
     ...m.map((r) => `| ${r.name} | ${f(r.without.random.median_ms)} → ${f(r.with.random_first.median_ms)} ms | ${f(r.without.random.p99_ms, 1)} → ${f(r.with.random_first.p99_ms, 1)} ms | ${f(r.without.disc.median_ms)} → ${f(r.with.disc_first.median_ms)} ms | ${f(r.without.disc.p99_ms)} → ${f(r.with.disc_first.p99_ms)} ms | ${f(r.without.bytes_per_triangle, 1)} → ${f(r.with.bytes_per_triangle, 1)} |`),
   ];
   const work = [
-    '| mesh | curves | searched paths | seeded paths | nodes expanded | strip faces | passes | flips | chords kept | chord walks (faces) |',
-    '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|',
+    '| mesh | curves | searched paths | seeded paths | nodes expanded | strip faces | passes | faces passed over | windows | flips | chords kept | chord walks (faces) |',
+    '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
     ...m.flatMap((r) => [['random, with', r.with.random], ['random, without', r.without.random], ['3% disc, with', r.with.disc]].map(([k, x]) =>
       `| ${r.name} | ${k} | ${COUNTERS.map((c) => `${f(x.median_counters[c], 0)} / ${f(x.p99_counters[c], 0)}`).join(' | ')} |`)),
   ];
@@ -465,8 +465,9 @@ ${before.join('\n')}
 
 Work per curve, median / p99 over the curves (SurfaceMeshHandle counters, summed over a curve's
 shortest paths): paths searched and seeded (straightened through known paths), graph nodes the
-searches expanded, faces of the strips straightened, straightening passes, flips kept, chords among them,
-and the faces the chords' walks entered (kept or not):
+searches expanded, faces of the strips straightened, straightening passes, the faces those passes
+worked on (a pass costs its strip; a window's pass, its window), windows straightened on their own,
+flips kept, chords among them, and the faces the chords' walks entered (kept or not):
 
 ${work.join('\n')}
 

@@ -113,7 +113,7 @@ export interface Skin3dRigHandle extends EmbindObject {
   errorMessage(): string;
 }
 
-/** What a shortest path or a traced curve cost: phase (i) searches and expanded graph nodes, phase (ii) strip faces, phase (iii) passes, kept flips and frozen vertices, chords traced and kept, faces their walks entered. */
+/** What a shortest path or a traced curve cost: phase (i) searches and expanded graph nodes, phase (ii) strip faces, phase (iii) passes, kept flips and frozen vertices, chords traced and kept, faces their walks entered, faces the passes worked on, windows straightened on their own. */
 export interface SurfaceWorkCounters {
   searches: number;
   visitedNodes: number;
@@ -124,6 +124,8 @@ export interface SurfaceWorkCounters {
   chordsTried: number;
   chords: number;
   walkedFaces: number;
+  passFaces: number;
+  windows: number;
 }
 
 /** wasm/bindings/surface_bindings.cpp — SurfaceMeshHandle (see the flow comment there). */

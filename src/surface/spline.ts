@@ -36,6 +36,10 @@ export interface TraceCounters {
   chords: number;
   /** ... and the faces the walks entered, kept or not. */
   walkedFaces: number;
+  /** Faces of the strips the passes worked on (a pass costs its strip's faces; a window's pass, its window's). */
+  passFaces: number;
+  /** Windows of a long path straightened on their own (short stretches where its last bends move). */
+  windows: number;
 }
 
 /** A curve traced on the mesh, as mesh points and as 3D positions. */

@@ -300,6 +300,8 @@ class SurfaceMeshHandle {
     out.set("chordsTried", s.chords_tried);
     out.set("chords", s.chords_kept);
     out.set("walkedFaces", s.walked_faces);
+    out.set("passFaces", s.pass_faces);
+    out.set("windows", s.windows);
     return out;
   }
 

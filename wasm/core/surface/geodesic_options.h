@@ -19,6 +19,16 @@ struct ShortestPathOptions {
   int slide_min = 4;             // ... when that passes at least this many bends (else a pass moves it)
   int slide_gap = 2;             // a slide passes at most this many untouched vertices between two bends
   int max_passes = 100000;       // safety bound on phase (iii)'s passes (each flips several vertices)
+  // A pass on a strip of at least window_min_faces faces (0: never) whose reflex vertices lie in
+  // short stretches straightens each stretch on its own: the faces from a bend of the path at least
+  // window_margin faces before it to one as far after (Straightener::windowed_pass). On the
+  // benchmark's coil the long paths' last passes slide bends along the saddle vertices of the tube's
+  // inner side in three or four places at once, a vertex or two per pass, each pass costing the
+  // whole strip (2026-12-05: 0.63x native instructions there, the same paths; the knotted tube and
+  // folded body 0.96x and 1.00x: their paths bend at a few vertices, nearly all moving at once, so
+  // the windows would cover the strip; 64 and 1024 against 128 and 2048: 0.63x against 0.65x).
+  int window_min_faces = 1024;
+  int window_margin = 64;
   // ---- Phase (i), the search (dual_search.h) ----
   double long_edge_fraction = 0.0075;  // edges longer than this fraction of the bounding-box diagonal
                                        // get one graph node per such length
@@ -77,11 +87,14 @@ struct PathStats {
   int chords_tried = 0;     // phase (iii): chords traced (walks along the line between two apices)
   int chords_kept = 0;      // phase (iii): of the kept flips, chords
   int walked_faces = 0;     // phase (iii): faces the chords' walks entered (kept or not)
+  int pass_faces = 0;       // phase (iii): faces of the strips the passes worked on (a window's its own)
+  int windows = 0;          // phase (iii): windows straightened on their own
 
   PathStats& operator+=(const PathStats& o) {
     searches += o.searches, visited_nodes += o.visited_nodes, strip_faces += o.strip_faces, passes += o.passes;
     accepted_flips += o.accepted_flips, frozen_vertices += o.frozen_vertices;
     chords_tried += o.chords_tried, chords_kept += o.chords_kept, walked_faces += o.walked_faces;
+    pass_faces += o.pass_faces, windows += o.windows;
     return *this;
   }
 };

@@ -44,6 +44,7 @@ void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vecto
 
 void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip) {
   frozen_.clear(), frozen_cos_.clear(), no_chain_.clear(), no_chord_.clear();
+  windows_off_ = false;
   // The strip laid out last for these end points, no pass since (a candidate measured before it was
   // chosen, GeodesicSolver::shortest_path): its layout and funnel path stand.
   auto same = [](const MeshPoint& x, const MeshPoint& y) { return x.face == y.face && x.uv == y.uv; };
@@ -151,6 +152,7 @@ void VertexSet::clear() {
 bool Straightener::pass(PathStats* stats) {
   laid_ = false;
   const int n = static_cast<int>(strip_.size());
+  if (stats) stats->pass_faces += n;
   // Every removable reflex vertex, largest turn first, with runs that do not touch each other.
   order_.clear();
   for (size_t j = 1; j + 1 < apices_.size(); ++j) {
@@ -159,6 +161,7 @@ bool Straightener::pass(PathStats* stats) {
     if (turn > 1e-9 && !is_frozen(apices_[j].vertex, turn)) order_.emplace_back(-turn, j);
   }
   if (order_.empty()) return false;
+  if (!in_window_ && windowed_pass(stats)) return true;
   std::sort(order_.begin(), order_.end());
   used_ = 0;
   if (taken_.size() < static_cast<size_t>(n)) taken_.resize(n, 0);
@@ -231,12 +234,7 @@ bool Straightener::pass(PathStats* stats) {
     apply(chosen_, trial_, trial_unfolded_, splice);
     trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
   }
-  if (trial_length < length_ - 1e-12 * mesh_.scale) {
-    strip_.swap(trial_);
-    std::swap(unfolded_, trial_unfolded_);
-    apices_.swap(trial_apices_);
-    made_.swap(trial_made_);
-    length_ = trial_length;
+  if (keep_trial(trial_length)) {
     if (stats) {
       stats->accepted_flips += static_cast<int>(chosen_.size());
       for (const Flip* f : chosen_) stats->chords_kept += f->chord;
@@ -253,6 +251,110 @@ bool Straightener::pass(PathStats* stats) {
     }
   }
   return true;
+}
+
+bool Straightener::keep_trial(double trial_length) {
+  if (!(trial_length < length_ - 1e-12 * mesh_.scale)) return false;
+  strip_.swap(trial_);
+  std::swap(unfolded_, trial_unfolded_);
+  apices_.swap(trial_apices_);
+  made_.swap(trial_made_);
+  length_ = trial_length;
+  return true;
+}
+
+// =================================================================================================
+// Windows
+// =================================================================================================
+
+bool Straightener::windowed_pass(PathStats* stats) {
+  const int n = static_cast<int>(strip_.size());
+  if (windows_off_) return windows_off_ = false;
+  if (options.window_min_faces <= 0 || n < options.window_min_faces) return false;
+  candidates_.clear();
+  for (const auto& entry : order_) candidates_.push_back(entry.second);
+  std::sort(candidates_.begin(), candidates_.end());
+  const size_t end = apices_.size() - 1;
+  auto candidate = [&](size_t j) { return std::binary_search(candidates_.begin(), candidates_.end(), j); };
+  // A window from apex ja to apex jb holds the faces from the last around ja to the first around jb.
+  auto first_after = [&](size_t ja) { return ja == 0 ? 0 : apices_[ja].portal + 1; };
+  auto last_before = [&](size_t jb) {
+    if (jb == end) return n - 1;
+    const int v = apices_[jb].vertex;
+    int p = apices_[jb].portal;
+    while (p > 0 && (unfolded_.portals[p - 1].left_vertex == v || unfolded_.portals[p - 1].right_vertex == v)) --p;
+    return p;
+  };
+  // Around each candidate, out to bends that are not candidates themselves, window_margin faces or
+  // more away; windows that overlap are one.
+  windows_.clear();
+  for (size_t j : candidates_) {
+    if (!windows_.empty() && j < windows_.back().jb) continue;
+    size_t ja = j - 1, jb = j + 1;
+    const int portal = std::clamp(apices_[j].portal, 0, n - 1);
+    while (ja > 0 && (candidate(ja) || first_after(ja) > portal - options.window_margin)) --ja;
+    while (jb < end && (candidate(jb) || last_before(jb) < portal + 1 + options.window_margin)) ++jb;
+    if (!windows_.empty() && ja < windows_.back().jb) {
+      windows_.back().jb = jb;
+    } else {
+      windows_.push_back({ja, jb, first_after(ja), 0});
+    }
+  }
+  size_t faces = 0;
+  for (Window& w : windows_) w.last = last_before(w.jb), faces += w.last - w.first + 1;
+  if (2 * faces > static_cast<size_t>(n)) return false;
+  size_t made = 0;
+  for (const Window& w : windows_) {
+    if (window_flips_.size() == made) window_flips_.emplace_back();
+    made += straighten_window(w.ja, w.jb, w.first, w.last, window_flips_[made], stats);
+  }
+  if (stats) stats->windows += static_cast<int>(windows_.size());
+  // (Nothing shortened: the windows' vertices are frozen now; a whole pass looks at the path next.)
+  windows_off_ = true;
+  if (made == 0) return true;
+  chosen_.clear();
+  for (size_t i = 0; i < made; ++i) chosen_.push_back(&window_flips_[i]);
+  apply(chosen_, trial_, trial_unfolded_, splice_);
+  windows_off_ = !keep_trial(shorten(trial_unfolded_, trial_made_, trial_apices_, splice_.path ? &splice_ : nullptr));
+  return true;
+}
+
+bool Straightener::straighten_window(size_t ja, size_t jb, int first, int last, Flip& flip, PathStats* stats) {
+  auto at_corner = [&](int face, int v) {
+    const int k = corner_of(mesh_, face, v);
+    return MeshPoint{face, Vec2(k == 1, k == 2)};
+  };
+  const MeshPoint a = ja == 0 ? start_ : at_corner(strip_[first], apices_[ja].vertex);
+  const MeshPoint b = jb + 1 == apices_.size() ? end_ : at_corner(strip_[last], apices_[jb].vertex);
+  // The path aside while the window's is straightened (frozen vertices stay: the same path there).
+  auto swap_outer = [&]() {
+    std::swap(start_, outer_start_), std::swap(end_, outer_end_), std::swap(length_, outer_length_);
+    strip_.swap(outer_strip_), std::swap(unfolded_, outer_unfolded_);
+    apices_.swap(outer_apices_), made_.swap(outer_made_);
+  };
+  swap_outer();
+  start_ = a, end_ = b;
+  strip_.assign(outer_strip_.begin() + first, outer_strip_.begin() + last + 1);
+  unfolded_.faces.clear(), unfolded_.corners.clear(), unfolded_.portals.clear();
+  append_moved(unfolded_, outer_unfolded_, first, last + 1, PlaneMotion{});  // (in the path's plane)
+  const double before = length_ = shorten(unfolded_, made_, apices_, nullptr);
+  in_window_ = true;
+  for (int passes = 0; passes < options.max_passes; ++passes) {
+    if (stats) ++stats->passes;
+    if (!pass(stats)) break;
+  }
+  in_window_ = false;
+  // (Flips keep a strip's first and last faces; the layout stays in the plane of the first.)
+  const bool shorter = length_ < before - 1e-12 * mesh_.scale && strip_.size() >= 2 &&
+                       strip_.front() == outer_strip_[first] && strip_.back() == outer_strip_[last];
+  if (shorter) {
+    flip.first = first, flip.last = last, flip.vertex = -1, flip.turn = 0;
+    flip.other.assign(strip_.begin() + 1, strip_.end() - 1);
+    flip.laid.assign(unfolded_.corners.begin() + 1, unfolded_.corners.end() - 1);
+    flip.chord = true, flip.chain = false;
+  }
+  swap_outer();
+  return shorter;
 }
 
 // =================================================================================================

@@ -18,6 +18,13 @@
 // side is at least π. The straightening ends when no reflex vertex is left unfrozen, or after
 // options.max_passes passes.
 //
+// A pass costs what the strip costs (its layout is moved and its funnel path copied past every
+// change), while most of a long path's passes flip a few vertices in a few places (bends sliding
+// along rows of saddle vertices one vertex per pass or two). Such a pass straightens each place as a
+// strip of its own instead (`windowed_pass`): the faces between two bends of the path some way
+// before and after it, with those bends as its end points, to the end; the windows' strips then
+// replace their faces at once, as one pass's chords would.
+//
 // A Straightener belongs to one mesh; its scratch (strips, layouts, funnel paths, flips) is kept
 // between paths, so after warm-up a path allocates nothing but what its result needs.
 #pragma once
@@ -167,6 +174,16 @@ class Straightener {
   // leaves it; a chord's faces where its trace laid them (moved likewise); other faces laid anew.
   // `splice` tells the funnel where the strips agree (splice.path null when a loop had to be cut).
   void apply(const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u, Splice& splice);
+  // Makes the trial strip the strip if its path (`trial_length` long) is shorter.
+  bool keep_trial(double trial_length);
+  // A pass that straightens the windows around its reflex vertices (order_) to the end, each on its
+  // own, and keeps their strips if the path gets shorter. False (nothing done) when the strip is
+  // shorter than options.window_min_faces or the windows would cover more than half of it.
+  bool windowed_pass(PathStats* stats);
+  // The faces strip[first..last] between apices ja and jb (end points there) straightened to the
+  // end on their own; `flip` replaces them by the result. False when the path there did not get
+  // shorter.
+  bool straighten_window(size_t ja, size_t jb, int first, int last, Flip& flip, PathStats* stats);
   // The funnel path of an unfolded strip from the start to the end point (`raw`: as the funnel made
   // it; `out`: where it goes straight on dropped), and its length.
   double shorten(const UnfoldedStrip& u, std::vector<Apex>& raw, std::vector<Apex>& out, const Splice* splice) const;
@@ -230,6 +247,24 @@ class Straightener {
   std::vector<std::array<Vec2, 3>> walk_laid_;
   std::vector<int8_t> walk_exits_;
   int walked_ = 0;  // faces the chords' walks entered since the last pass's count
+
+  // Windows: the apices and faces of each (strip order), the flips that replace them, and the path
+  // outside while one is straightened. in_window_: a window's passes are running (they do not open
+  // windows of their own); windows_off_: the last windowed pass changed nothing, so the next pass
+  // is a whole one.
+  struct Window {
+    size_t ja, jb;
+    int first, last;
+  };
+  std::vector<Window> windows_;
+  std::vector<Flip> window_flips_;
+  std::vector<size_t> candidates_;
+  MeshPoint outer_start_, outer_end_;
+  std::vector<int> outer_strip_;
+  UnfoldedStrip outer_unfolded_;
+  std::vector<Apex> outer_apices_, outer_made_;
+  double outer_length_ = 0;
+  bool in_window_ = false, windows_off_ = false;
 };
 
 }  // namespace splinekit::surface
