@@ -325,6 +325,29 @@ that they bound the surface distance from below and keep the search exact): the 
 split quads (the bound recovers 70% and saves 20% of the nodes) and 108-220 on the dragon's slivers (it recovers
 nothing).`;
 
+const WINDOWS_NOTE = `Windows (2026-12-04, Straightener::windowed_pass). After the descent, passes were 61% of the coil's
+instructions (callgrind, 10 random curves), and most of a long path's passes flip a few vertices: on a 6,900-face
+coil path, 10 passes with hundreds of flips, then 70 with one to six, bends sliding along the saddle vertices of
+the tube's inner side in three or four places at once, a vertex or two per pass, each pass moving the layout of the
+whole strip and copying its funnel path (apply 26%, the funnel 20%). Such a pass now straightens each place on its
+own: the faces between bends of the path window_margin (64) faces or more before and after it, none of them
+reflex, with those bends as end points, to the end; the windows' strips then go in at once as one pass's chords
+would (the path gets shorter: each window's did, and the rest is as it was). Only where the windows cover at most
+half of a strip of 1024 faces or more. Native, 20 random long paths, instructions 0.63x on the coil, 0.96x on the
+knotted tube, 1.00x on the folded body and spot_loop2_369k, every path as long to 1e-13; 60 random curves: coil
+1162.8 -> 886.7 ms (median 20.0 -> 14.0 ms), knotted tube 1560 -> 1515 ms. In one wasm module against the tree
+before (bench:ab, 100 curves, best of 2): per-curve median / total 0.835x / 0.785x on the coil (95 curves changed,
+mean length +0.0014%), 0.962x / 0.944x on the knotted tube (+0.09%; -0.03% over 60 other curves natively),
+0.998x / 0.988x on the folded body (+0.003%), nefertiti, spot_loop2_369k and the noisy spot within 0.2% (no curve
+changed). The knotted tube's paths bend at a few vertices, nearly all moving at once, so their windows would
+cover the strip: its last passes stay whole. There every other pass fails: a bend's zipper (the row of vertices
+it slides along) makes the path longer, the pass falls back to the largest turn alone, and the next pass makes the
+others' flips. Measured and dropped: giving up the zipper for all the vertices of one that failed (knotted tube
+0.82x instructions, but nefertiti's paths moved to other local geodesics up to 2.9% longer, the coil's up to
+1.9%); testing a zipper between its neighbouring bends before the pass takes it (0.88x on the knotted tube, 1.04x
+on the folded body and 1.03x on spot_loop2_369k, and the same longer paths: the zipper that lengthens the way
+between its neighbours can still shorten the path once they move).`;
+
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis
 is 0.88, one less the tube radius, over all of the path but ramps of about a twentieth of it at each end: a path
@@ -347,11 +370,12 @@ changed, mean length equal to 5 digits), 1.000x / 1.004x on the noisy spot (+0.0
 that long). Measured and dropped that day: candidates from 256 faces (1.02x the coil's instructions, 1.01x
 nefertiti's, whose curves came out 1% shorter); the side split at the midpoint of the forward and backward strips'
 points halfway along (a Z in place of an L, if the strips were an L and its mirror): 120838 -> 128765 flips, 7 of 27
-sides longer, the two strips being the same side of the tube. The tables above were run after it (2026-12-04, 15:10) on a
-VM slower than the day before's and drifting within the run: nefertiti and the folded body did the same work as in the
-record before (their counters are the same) in 1.23 and 1.6 times the time, and the folded body's shortest paths with
-and without landmarks, the same nodes and the same paths, took 13.8 and 11.4 s: its 1.02 against flipOut is that
-drift (0.83 the day before; the shortest paths' code did not change). bench:ab's ratios above are what compare the
+sides longer, the two strips being the same side of the tube. The tables were run after it that day (15:10; now
+after windows, below) on a VM slower than the day before's and drifting within the run: nefertiti and the folded body
+did the same work as in the record before (their counters the same) in 1.23 and 1.6 times the time, and the folded
+body's shortest paths with and without landmarks, the same nodes and the same paths, took 13.8 and 11.4 s: its 1.02
+against flipOut then was that drift (0.83 the day before, 0.89 in the tables now; the shortest paths' code did not
+change). bench:ab's ratios above are what compare the
 code; the coil's counters say what changed there (flips 11556 -> 2937 per curve, faces walked by chords 158k -> 67k). Later that day the descent's candidate came first, and the search from the far end is left out when it
 beats the forward strip (not in the tables above): bench:ab against the tree before, per-curve median / total
 0.861x / 0.866x on the coil (25 of 100 curves changed, mean length equal to 4 digits), 0.958x / 0.957x on the
@@ -482,6 +506,8 @@ ${SCANS_NOTE}
 ${EVENING_NOTE}
 
 ${DESCENT_NOTE}
+
+${WINDOWS_NOTE}
 
 Shortest paths between random vertex pairs (${m[0]?.geodesics.sources} sources × ${m[0]?.geodesics.targets} targets per mesh), ours
 (SurfaceMesh.shortestPath: refined search graph, funnel, flips; wasm, timed inside the module) against

@@ -535,6 +535,21 @@ was set; the header says what each option does).
   slide_gap = 2: passing any number of untouched boundary vertices between bends, slides ran along the
   folded body's long strips (210 vertices each) and cost it 19%; on the coil's rows the bends are one or
   two vertices apart.
+- **window_min_faces = 1024, window_margin = 64** (phase (iii), 2026-12-04; Straightener::windowed_pass).
+  A pass costs its whole strip (the layout moved past every change, the funnel path copied), while the
+  coil's long paths end with bends sliding along the saddle vertices of the tube's inner side in three
+  or four places, a vertex or two per pass, for some 70 of their 80 passes. A pass whose reflex vertices'
+  windows (from a bend window_margin faces before each to one as far after, none of them reflex) cover at
+  most half of a strip of window_min_faces or more straightens each window on its own, to the end, and
+  puts them in at once. Native instructions of 20 random long paths: 0.63x on the coil, 0.96x on the
+  knotted tube, 1.00x on the folded body and spot_loop2_369k, the same lengths to 1e-13 (128 and 2048:
+  0.65x; 32: 0.65x; windows over up to a quarter of the strip: 0.63x). In one wasm module against the
+  tree before (bench:ab, 100 random curves, best of 2): per-curve median 0.835x and total 0.785x on the
+  coil, 0.962x / 0.944x on the knotted tube, 0.998x / 0.988x on the folded body, nefertiti, spot_loop2_369k
+  and the noisy spot within 0.2% (no curve changed). Curves that changed came out on other local
+  geodesics, without a bias: mean length +0.0014% on the coil, +0.09% on the knotted tube (-0.03% over 60
+  other curves, native), +0.003% on the folded body. The knotted tube's paths bend at a few vertices, nearly
+  all of them moving at once, so its windows would cover the strip and its passes stay whole.
 - **max_passes = 100000** (phase (iii)): a safety bound on the passes (each flips every reflex vertex
   whose faces do not touch another's), not a tuning knob.
 

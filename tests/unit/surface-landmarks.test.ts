@@ -117,7 +117,7 @@ describe('landmarks', () => {
     }
   });
 
-  test("a curve's work counters add up: chords among the kept flips, their walks' faces", () => {
+  test("a curve's work counters add up: chords among the kept flips, their walks' faces, the passes' faces", () => {
     const mesh = SurfaceMesh.fromArrays(positions, triangles);
     try {
       // A control polygon that crosses the slot twice: its sides go round the slot's end.
@@ -131,6 +131,10 @@ describe('landmarks', () => {
       expect(c.chords).toBeLessThanOrEqual(c.chordsTried);
       // A kept chord walked at least the faces it put into the strip.
       expect(c.walkedFaces).toBeGreaterThanOrEqual(c.chords);
+      // A pass works on a strip of two faces or more; this slot's strips are too short for windows.
+      expect(c.passes).toBeGreaterThan(0);
+      expect(c.passFaces).toBeGreaterThanOrEqual(2 * c.passes);
+      expect(c.windows).toBe(0);
       for (const v of Object.values(c)) expect(Number.isInteger(v)).toBe(true);
     } finally {
       mesh.dispose();
