@@ -547,8 +547,9 @@ was set; the header says what each option does).
   tree before (bench:ab, 100 random curves, best of 2): per-curve median 0.835x and total 0.785x on the
   coil, 0.962x / 0.944x on the knotted tube, 0.998x / 0.988x on the folded body, nefertiti, spot_loop2_369k
   and the noisy spot within 0.2% (no curve changed). Curves that changed came out on other local
-  geodesics, without a bias: mean length +0.0014% on the coil, +0.09% on the knotted tube (-0.03% over 60
-  other curves, native), +0.003% on the folded body. The knotted tube's paths bend at a few vertices, nearly
+  geodesics: mean length +0.0014% on the coil, +0.09% on the knotted tube (-0.03% over 60 other curves,
+  native), +0.003% on the folded body; windows from 256 faces on a small noisy folded body took 32 of 300
+  paths longer and 19 shorter (+0.05% in total), hence the long strips only. The knotted tube's paths bend at a few vertices, nearly
   all of them moving at once, so its windows would cover the strip and its passes stay whole.
 - **max_passes = 100000** (phase (iii)): a safety bound on the passes (each flips every reflex vertex
   whose faces do not touch another's), not a tuning knob.

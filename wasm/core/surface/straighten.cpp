@@ -269,7 +269,10 @@ bool Straightener::keep_trial(double trial_length) {
 
 bool Straightener::windowed_pass(PathStats* stats) {
   const int n = static_cast<int>(strip_.size());
-  if (windows_off_) return windows_off_ = false;
+  if (windows_off_) {  // (the last windowed pass changed nothing: this one is whole)
+    windows_off_ = false;
+    return false;
+  }
   if (options.window_min_faces <= 0 || n < options.window_min_faces) return false;
   candidates_.clear();
   for (const auto& entry : order_) candidates_.push_back(entry.second);
@@ -300,9 +303,13 @@ bool Straightener::windowed_pass(PathStats* stats) {
       windows_.push_back({ja, jb, first_after(ja), 0});
     }
   }
-  size_t faces = 0;
-  for (Window& w : windows_) w.last = last_before(w.jb), faces += w.last - w.first + 1;
-  if (2 * faces > static_cast<size_t>(n)) return false;
+  int faces = 0;
+  for (Window& w : windows_) {
+    w.last = last_before(w.jb);
+    if (w.last <= w.first) return false;  // (a bend that comes back to a vertex of the one before)
+    faces += w.last - w.first + 1;
+  }
+  if (2 * faces > n) return false;
   size_t made = 0;
   for (const Window& w : windows_) {
     if (window_flips_.size() == made) window_flips_.emplace_back();
