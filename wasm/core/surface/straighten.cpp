@@ -37,9 +37,9 @@ void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vecto
     if (!pass(stats)) break;
   }
   // Crossings of the final strip.
-  crossings(unfolded_, apices_, path.lerps, path.arc);
-  strip.assign(strip_.begin(), strip_.end());
-  path.strip = strip_;
+  crossings(path_.unfolded, path_.apices, path.lerps, path.arc);
+  strip.assign(path_.strip.begin(), path_.strip.end());
+  path.strip = path_.strip;
 }
 
 void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip) {
@@ -48,17 +48,17 @@ void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std
   // The strip laid out last for these end points, no pass since (a candidate measured before it was
   // chosen, GeodesicSolver::shortest_path): its layout and funnel path stand.
   auto same = [](const MeshPoint& x, const MeshPoint& y) { return x.face == y.face && x.uv == y.uv; };
-  if (laid_ && same(start, start_) && same(end, end_) && strip == strip_) return;
-  start_ = start, end_ = end;
-  strip_.assign(strip.begin(), strip.end());
-  unfold_strip(mesh_, strip_, unfolded_);
-  length_ = shorten(unfolded_, made_, apices_, nullptr);
+  if (laid_ && same(start, path_.start) && same(end, path_.end) && strip == path_.strip) return;
+  path_.start = start, path_.end = end;
+  path_.strip.assign(strip.begin(), strip.end());
+  unfold_strip(mesh_, path_.strip, path_.unfolded);
+  path_.length = shorten(path_.unfolded, path_.made, path_.apices, nullptr);
   laid_ = true;
 }
 
 double Straightener::shorten(const UnfoldedStrip& u, std::vector<Apex>& raw, std::vector<Apex>& out,
                              const Splice* splice) const {
-  funnel(u, u.map(0, start_), u.map(static_cast<int>(u.faces.size()) - 1, end_), raw, splice);
+  funnel(u, u.map(0, path_.start), u.map(static_cast<int>(u.faces.size()) - 1, path_.end), raw, splice);
   out.assign(raw.begin(), raw.end());
   drop_straight(out);
   return polyline_length(out);
@@ -69,21 +69,21 @@ double Straightener::shorten(const UnfoldedStrip& u, std::vector<Apex>& raw, std
 // =================================================================================================
 
 bool Straightener::run_of(int v, int at, int& first, int& last) const {
-  const int n = static_cast<int>(strip_.size());
+  const int n = static_cast<int>(path_.strip.size());
   first = last = std::clamp(at, 0, n - 1);
-  if (!contains_vertex(mesh_, strip_[first], v)) return false;
-  while (first > 0 && contains_vertex(mesh_, strip_[first - 1], v)) --first;
-  while (last + 1 < n && contains_vertex(mesh_, strip_[last + 1], v)) ++last;
+  if (!contains_vertex(mesh_, path_.strip[first], v)) return false;
+  while (first > 0 && contains_vertex(mesh_, path_.strip[first - 1], v)) --first;
+  while (last + 1 < n && contains_vertex(mesh_, path_.strip[last + 1], v)) ++last;
   return true;
 }
 
 bool Straightener::on_left(const Apex& x) const {
-  return unfolded_.portals[std::clamp(x.portal, 0, static_cast<int>(unfolded_.portals.size()) - 1)].left_vertex ==
-         x.vertex;
+  return path_.unfolded.portals[std::clamp(x.portal, 0, static_cast<int>(path_.unfolded.portals.size()) - 1)]
+             .left_vertex == x.vertex;
 }
 
 bool Straightener::overlaps(int first, int last) const {
-  const int n = static_cast<int>(strip_.size());
+  const int n = static_cast<int>(path_.strip.size());
   for (int i = std::max(0, first - 1), end = std::min(n - 1, last + 1); i <= end; ++i)
     if (taken_[i]) return true;
   return false;
@@ -104,11 +104,11 @@ void Straightener::freeze(int v, double turn, PathStats* stats) {
 }
 
 bool Straightener::surely_frozen(size_t j) const {
-  const double* bound = frozen_cos_.find(apices_[j].vertex);
+  const double* bound = frozen_cos_.find(path_.apices[j].vertex);
   if (!bound) return false;
   // cos(turn) = a·b / (|a||b|) against the bound, with a margin (1e-12) far above the rounding of
   // both and of atan2: where it holds, the turn turn_at computes is below the frozen one too.
-  const Vec2 a = apices_[j].pos - apices_[j - 1].pos, b = apices_[j + 1].pos - apices_[j].pos;
+  const Vec2 a = path_.apices[j].pos - path_.apices[j - 1].pos, b = path_.apices[j + 1].pos - path_.apices[j].pos;
   const double norms = a.norm() * b.norm();
   return norms > 0 && a.dot(b) >= (*bound + 1e-12) * norms;
 }
@@ -151,14 +151,14 @@ void VertexSet::clear() {
 
 bool Straightener::pass(PathStats* stats) {
   laid_ = false;
-  const int n = static_cast<int>(strip_.size());
+  const int n = static_cast<int>(path_.strip.size());
   if (stats) stats->pass_faces += n;
   // Every removable reflex vertex, largest turn first, with runs that do not touch each other.
   order_.clear();
-  for (size_t j = 1; j + 1 < apices_.size(); ++j) {
-    if (apices_[j].vertex < 0 || surely_frozen(j)) continue;
-    const double turn = turn_at(apices_, j);
-    if (turn > 1e-9 && !is_frozen(apices_[j].vertex, turn)) order_.emplace_back(-turn, j);
+  for (size_t j = 1; j + 1 < path_.apices.size(); ++j) {
+    if (path_.apices[j].vertex < 0 || surely_frozen(j)) continue;
+    const double turn = turn_at(path_.apices, j);
+    if (turn > 1e-9 && !is_frozen(path_.apices[j].vertex, turn)) order_.emplace_back(-turn, j);
   }
   if (order_.empty()) return false;
   if (!in_window_ && windowed_pass(stats)) return true;
@@ -169,8 +169,8 @@ bool Straightener::pass(PathStats* stats) {
     // A vertex whose faces a flip of this pass already changes cannot flip in it; it is only
     // frozen (as `flip` would) if the path through it is locally shortest.
     int run_first, run_last;
-    const int v = apices_[j].vertex;
-    const bool in_strip = run_of(v, apices_[j].portal, run_first, run_last);
+    const int v = path_.apices[j].vertex;
+    const bool in_strip = run_of(v, path_.apices[j].portal, run_first, run_last);
     const bool blocked = in_strip && used_ > 0 && overlaps(run_first, run_last);
     if (blocked && !std::isnan(angle_sums_[v])) {
       if (straight_through(v, -neg_turn)) freeze(v, -neg_turn, stats);
@@ -188,12 +188,12 @@ bool Straightener::pass(PathStats* stats) {
     // A chord spans the faces around the neighbouring apices: look for room before tracing it.
     ChordRoom room{0, n - 1, n - 1};
     int unused;
-    const bool fits =
-        options.chords && -neg_turn > options.chord_min_turn &&
-        (apices_[j - 1].vertex < 0 || run_of(apices_[j - 1].vertex, apices_[j - 1].portal, room.p_first, unused)) &&
-        (apices_[j + 1].vertex < 0 ||
-         run_of(apices_[j + 1].vertex, apices_[j + 1].portal, room.q_first, room.q_last)) &&
-        !overlaps(room.p_first, room.q_last);
+    const bool fits = options.chords && -neg_turn > options.chord_min_turn &&
+                      (path_.apices[j - 1].vertex < 0 ||
+                       run_of(path_.apices[j - 1].vertex, path_.apices[j - 1].portal, room.p_first, unused)) &&
+                      (path_.apices[j + 1].vertex < 0 ||
+                       run_of(path_.apices[j + 1].vertex, path_.apices[j + 1].portal, room.q_first, room.q_last)) &&
+                      !overlaps(room.p_first, room.q_last);
     const bool try_chord = fits && !no_chord_.contains(made.vertex);
     if (try_chord && stats) ++stats->chords_tried;
     bool slid = false;
@@ -219,7 +219,7 @@ bool Straightener::pass(PathStats* stats) {
   Splice& splice = splice_;
   apply(chosen_, trial_, trial_unfolded_, splice);
   double trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
-  if (!(trial_length < length_ - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
+  if (!(trial_length < path_.length - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
     // Together they did not shorten the path: fall back to the largest turn alone. The others'
     // zippers and chords are not tried again (a semi-star at a reflex vertex shortens the path,
     // a zipper or chord need not; one that does not kept the group failing pass after pass).
@@ -254,12 +254,12 @@ bool Straightener::pass(PathStats* stats) {
 }
 
 bool Straightener::keep_trial(double trial_length) {
-  if (!(trial_length < length_ - 1e-12 * mesh_.scale)) return false;
-  strip_.swap(trial_);
-  std::swap(unfolded_, trial_unfolded_);
-  apices_.swap(trial_apices_);
-  made_.swap(trial_made_);
-  length_ = trial_length;
+  if (!(trial_length < path_.length - 1e-12 * mesh_.scale)) return false;
+  path_.strip.swap(trial_);
+  std::swap(path_.unfolded, trial_unfolded_);
+  path_.apices.swap(trial_apices_);
+  path_.made.swap(trial_made_);
+  path_.length = trial_length;
   return true;
 }
 
@@ -268,7 +268,7 @@ bool Straightener::keep_trial(double trial_length) {
 // =================================================================================================
 
 bool Straightener::windowed_pass(PathStats* stats) {
-  const int n = static_cast<int>(strip_.size());
+  const int n = static_cast<int>(path_.strip.size());
   if (windows_off_) {  // (the last windowed pass changed nothing: this one is whole)
     windows_off_ = false;
     return false;
@@ -277,15 +277,16 @@ bool Straightener::windowed_pass(PathStats* stats) {
   candidates_.clear();
   for (const auto& entry : order_) candidates_.push_back(entry.second);
   std::sort(candidates_.begin(), candidates_.end());
-  const size_t end = apices_.size() - 1;
+  const size_t end = path_.apices.size() - 1;
   auto candidate = [&](size_t j) { return std::binary_search(candidates_.begin(), candidates_.end(), j); };
   // A window from apex ja to apex jb holds the faces from the last around ja to the first around jb.
-  auto first_after = [&](size_t ja) { return ja == 0 ? 0 : apices_[ja].portal + 1; };
+  auto first_after = [&](size_t ja) { return ja == 0 ? 0 : path_.apices[ja].portal + 1; };
   auto last_before = [&](size_t jb) {
     if (jb == end) return n - 1;
-    const int v = apices_[jb].vertex;
-    int p = apices_[jb].portal;
-    while (p > 0 && (unfolded_.portals[p - 1].left_vertex == v || unfolded_.portals[p - 1].right_vertex == v)) --p;
+    const int v = path_.apices[jb].vertex;
+    int p = path_.apices[jb].portal;
+    while (p > 0 && (path_.unfolded.portals[p - 1].left_vertex == v || path_.unfolded.portals[p - 1].right_vertex == v))
+      --p;
     return p;
   };
   // Around each candidate, out to bends that are not candidates themselves, window_margin faces or
@@ -294,7 +295,7 @@ bool Straightener::windowed_pass(PathStats* stats) {
   for (size_t j : candidates_) {
     if (!windows_.empty() && j < windows_.back().jb) continue;
     size_t ja = j - 1, jb = j + 1;
-    const int portal = std::clamp(apices_[j].portal, 0, n - 1);
+    const int portal = std::clamp(path_.apices[j].portal, 0, n - 1);
     while (ja > 0 && (candidate(ja) || first_after(ja) > portal - options.window_margin)) --ja;
     while (jb < end && (candidate(jb) || last_before(jb) < portal + 1 + options.window_margin)) ++jb;
     if (!windows_.empty() && ja < windows_.back().jb) {
@@ -331,20 +332,15 @@ bool Straightener::straighten_window(size_t ja, size_t jb, int first, int last, 
     const int k = corner_of(mesh_, face, v);
     return MeshPoint{face, Vec2(k == 1, k == 2)};
   };
-  const MeshPoint a = ja == 0 ? start_ : at_corner(strip_[first], apices_[ja].vertex);
-  const MeshPoint b = jb + 1 == apices_.size() ? end_ : at_corner(strip_[last], apices_[jb].vertex);
+  const MeshPoint a = ja == 0 ? path_.start : at_corner(path_.strip[first], path_.apices[ja].vertex);
+  const MeshPoint b = jb + 1 == path_.apices.size() ? path_.end : at_corner(path_.strip[last], path_.apices[jb].vertex);
   // The path aside while the window's is straightened (frozen vertices stay: the same path there).
-  auto swap_outer = [&]() {
-    std::swap(start_, outer_start_), std::swap(end_, outer_end_), std::swap(length_, outer_length_);
-    strip_.swap(outer_strip_), std::swap(unfolded_, outer_unfolded_);
-    apices_.swap(outer_apices_), made_.swap(outer_made_);
-  };
-  swap_outer();
-  start_ = a, end_ = b;
-  strip_.assign(outer_strip_.begin() + first, outer_strip_.begin() + last + 1);
-  unfolded_.faces.clear(), unfolded_.corners.clear(), unfolded_.portals.clear();
-  append_moved(unfolded_, outer_unfolded_, first, last + 1, PlaneMotion{});  // (in the path's plane)
-  const double before = length_ = shorten(unfolded_, made_, apices_, nullptr);
+  std::swap(path_, outer_);
+  path_.start = a, path_.end = b;
+  path_.strip.assign(outer_.strip.begin() + first, outer_.strip.begin() + last + 1);
+  path_.unfolded.faces.clear(), path_.unfolded.corners.clear(), path_.unfolded.portals.clear();
+  append_moved(path_.unfolded, outer_.unfolded, first, last + 1, PlaneMotion{});  // (in the path's plane)
+  const double before = path_.length = shorten(path_.unfolded, path_.made, path_.apices, nullptr);
   in_window_ = true;
   for (int passes = 0; passes < options.max_passes; ++passes) {
     if (stats) ++stats->passes;
@@ -352,15 +348,15 @@ bool Straightener::straighten_window(size_t ja, size_t jb, int first, int last, 
   }
   in_window_ = false;
   // (Flips keep a strip's first and last faces; the layout stays in the plane of the first.)
-  const bool shorter = length_ < before - 1e-12 * mesh_.scale && strip_.size() >= 2 &&
-                       strip_.front() == outer_strip_[first] && strip_.back() == outer_strip_[last];
+  const bool shorter = path_.length < before - 1e-12 * mesh_.scale && path_.strip.size() >= 2 &&
+                       path_.strip.front() == outer_.strip[first] && path_.strip.back() == outer_.strip[last];
   if (shorter) {
     flip.first = first, flip.last = last, flip.vertex = -1, flip.turn = 0;
-    flip.other.assign(strip_.begin() + 1, strip_.end() - 1);
-    flip.laid.assign(unfolded_.corners.begin() + 1, unfolded_.corners.end() - 1);
+    flip.other.assign(path_.strip.begin() + 1, path_.strip.end() - 1);
+    flip.laid.assign(path_.unfolded.corners.begin() + 1, path_.unfolded.corners.end() - 1);
     flip.chord = true, flip.chain = false;
   }
-  swap_outer();
+  std::swap(path_, outer_);
   return shorter;
 }
 
@@ -369,27 +365,27 @@ bool Straightener::straighten_window(size_t ja, size_t jb, int first, int last, 
 // =================================================================================================
 
 bool Straightener::flip(size_t j, double turn, int first, int last, Flip& flip) {
-  const int v = apices_[j].vertex;
+  const int v = path_.apices[j].vertex;
   flip.vertex = v;
   flip.turn = turn;
   flip.chain = flip.chord = false;
   flip.laid.clear();
   if (straight_through(v, turn)) return false;
-  const int f0 = strip_[first];
+  const int f0 = path_.strip[first];
   // The run turns around v keeping it on its left or right; the other semi-star the other way.
-  const bool run_left = first < last && mesh_.adjacency[f0][edge_around(mesh_, f0, v, true)] == strip_[first + 1];
+  const bool run_left = first < last && mesh_.adjacency[f0][edge_around(mesh_, f0, v, true)] == path_.strip[first + 1];
   flip.first = first, flip.last = last;
   flip.other.clear();
   for (int f = f0, steps = 0; steps < 4096; ++steps) {
     f = mesh_.adjacency[f][edge_around(mesh_, f, v, !run_left)];
     if (f < 0) return false;
-    if (f == strip_[last]) break;
+    if (f == path_.strip[last]) break;
     flip.other.push_back(f);
   }
   double& angle_sum = angle_sums_[v];  // the whole fan: the run and the other side
   if (std::isnan(angle_sum)) {
     angle_sum = 0;
-    for (int i = first; i <= last; ++i) angle_sum += corner_angle(mesh_, strip_[i], v);
+    for (int i = first; i <= last; ++i) angle_sum += corner_angle(mesh_, path_.strip[i], v);
     for (int f : flip.other) angle_sum += corner_angle(mesh_, f, v);
   }
   return !straight_through(v, turn);
@@ -405,23 +401,25 @@ bool Straightener::flip(size_t j, double turn, int first, int last, Flip& flip) 
 // pass keeps it only if the path gets shorter, otherwise v gets the single flip from then on
 // (no_chain_).
 void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead) {
-  const int v = apices_[j].vertex, n = static_cast<int>(strip_.size());
+  const int v = path_.apices[j].vertex, n = static_cast<int>(path_.strip.size());
   if (n < 3 || no_chain_.contains(v)) return;
-  const Portal& own = unfolded_.portals[std::clamp(apices_[j].portal, 0, n - 2)];
+  const Portal& own = path_.unfolded.portals[std::clamp(path_.apices[j].portal, 0, n - 2)];
   const bool left = own.left_vertex == v;
   if (!left && own.right_vertex != v) return;
-  auto side_vertex = [&](int i) { return left ? unfolded_.portals[i].left_vertex : unfolded_.portals[i].right_vertex; };
-  const Vec2 &from = apices_[j - 1].pos, &to = apices_[j + 1].pos;
-  const bool v_right = orient(from, to, apices_[j].pos) < 0;
+  auto side_vertex = [&](int i) {
+    return left ? path_.unfolded.portals[i].left_vertex : path_.unfolded.portals[i].right_vertex;
+  };
+  const Vec2 &from = path_.apices[j - 1].pos, &to = path_.apices[j + 1].pos;
+  const bool v_right = orient(from, to, path_.apices[j].pos) < 0;
   auto blocks = [&](int i) {  // the side vertex of portal i
-    const double o = orient(from, to, left ? unfolded_.left(i) : unfolded_.right(i));
+    const double o = orient(from, to, left ? path_.unfolded.left(i) : path_.unfolded.right(i));
     return v_right ? o < 0 : o > 0;
   };
   int first = flip.first, last = flip.last;
   pivots_.clear();
   // (A slide's: every side vertex after apex j-back and before apex j+ahead.)
-  const int before = apices_[j - back].portal;
-  const Apex& after = apices_[j + ahead];
+  const int before = path_.apices[j - back].portal;
+  const Apex& after = path_.apices[j + ahead];
   for (int i = first - 1; i > before && (back > 1 || blocks(i));) {  // vertices before v, nearest first
     const int c = side_vertex(i);
     while (i > before + 1 && side_vertex(i - 1) == c) --i;
@@ -448,19 +446,19 @@ void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead) {
   };
   const int p0 = pivots_[0];
   int entry = pivots_[1];
-  if (contains_vertex(mesh_, strip_[first + 1], p0)) {
-    const Portal& shared = unfolded_.portals[first];
+  if (contains_vertex(mesh_, path_.strip[first + 1], p0)) {
+    const Portal& shared = path_.unfolded.portals[first];
     entry = shared.left_vertex == p0 ? shared.right_vertex : shared.left_vertex;
   }
   std::vector<int>& other = zipper_faces_;
   other.clear();
   size_t at = 0;
-  int f = around(strip_[first], p0, entry, entry);
+  int f = around(path_.strip[first], p0, entry, entry);
   for (int steps = 0;; ++steps) {
     if (f < 0 || steps > 256 + 16 * static_cast<int>(pivots_.size())) return;
     if (at + 1 == pivots_.size()) {
-      if (f == strip_[last]) break;
-    } else if (f == strip_[last]) {
+      if (f == path_.strip[last]) break;
+    } else if (f == path_.strip[last]) {
       return;
     } else if (contains_vertex(mesh_, f, pivots_[at + 1])) {
       other.push_back(f);
@@ -494,13 +492,15 @@ double Straightener::angle_sum(int v) {
 
 size_t Straightener::slide(size_t j, size_t& ahead) {
   ahead = 1;
-  const size_t count = apices_.size();
-  const int np = static_cast<int>(unfolded_.portals.size());
-  const Apex& v = apices_[j];
-  const double side = cross(v.pos - apices_[j - 1].pos, apices_[j + 1].pos - v.pos);  // < 0: a right turn
+  const size_t count = path_.apices.size();
+  const int np = static_cast<int>(path_.unfolded.portals.size());
+  const Apex& v = path_.apices[j];
+  const double side = cross(v.pos - path_.apices[j - 1].pos, path_.apices[j + 1].pos - v.pos);  // < 0: a right turn
   const bool left = on_left(v);
-  auto side_vertex = [&](int i) { return left ? unfolded_.portals[i].left_vertex : unfolded_.portals[i].right_vertex; };
-  auto side_pos = [&](int i) { return left ? unfolded_.left(i) : unfolded_.right(i); };
+  auto side_vertex = [&](int i) {
+    return left ? path_.unfolded.portals[i].left_vertex : path_.unfolded.portals[i].right_vertex;
+  };
+  auto side_pos = [&](int i) { return left ? path_.unfolded.left(i) : path_.unfolded.right(i); };
   const int at = std::clamp(v.portal, 0, np - 1);
   if (side_vertex(at) != v.vertex) return 1;
   // m followed by the turn about vertex x (at c) by its angle excess (the way that opens a bend in
@@ -519,17 +519,17 @@ size_t Straightener::slide(size_t j, size_t& ahead) {
   // Whether apex d can be passed (only a frozen bend on v's side: the others are flips of their own).
   auto may_pass = [&](size_t d) {
     if (d == 0 || d + 1 >= count) return false;  // (also d "below" 0: j - k wraps round)
-    const Apex& x = apices_[d];
+    const Apex& x = path_.apices[d];
     return x.vertex >= 0 && on_left(x) == left && frozen_.contains(x.vertex) &&
-           (surely_frozen(d) || is_frozen(x.vertex, turn_at(apices_, d)));
+           (surely_frozen(d) || is_frozen(x.vertex, turn_at(path_.apices, d)));
   };
   // Whether the path, coming into apex d along `in` and leaving along `out`, bends there in v's
   // direction by more than d's excess lets it (d is passed too).
   auto passed = [&](size_t d, const Vec2& in, const Vec2& out) {
     const double c = cross(in, out);
     if (!(c * side > 0)) return false;
-    const double sum = angle_sum(apices_[d].vertex);
-    return !std::isnan(sum) && !straight_through(apices_[d].vertex, std::atan2(std::abs(c), in.dot(out)));
+    const double sum = angle_sum(path_.apices[d].vertex);
+    return !std::isnan(sum) && !straight_through(path_.apices[d].vertex, std::atan2(std::abs(c), in.dot(out)));
   };
   // From v along its side of the strip (step -1: back, +1: ahead), turning `m` about every vertex
   // passed; `reached(d)` decides at each apex d = j + step·k whether the slide passes it as well.
@@ -544,8 +544,8 @@ size_t Straightener::slide(size_t j, size_t& ahead) {
       if (i < 0 || i >= np) break;
       x = side_vertex(i), c = side_pos(i);
       const size_t d = j + step * static_cast<long>(k);
-      if (x != apices_[d].vertex) {  // a boundary vertex the path does not touch: passed too
-        if (step < 0 ? apices_[d].portal >= i : apices_[d].portal < i) break;  // d lies on the other side
+      if (x != path_.apices[d].vertex) {  // a boundary vertex the path does not touch: passed too
+        if (step < 0 ? path_.apices[d].portal >= i : path_.apices[d].portal < i) break;  // d lies on the other side
         if (++gap > options.slide_gap) break;
         continue;
       }
@@ -565,14 +565,14 @@ size_t Straightener::slide(size_t j, size_t& ahead) {
   // Back, with the apex after v staying: its layout turns about each vertex passed.
   PlaneMotion back_motion;
   const size_t back = run(-1, back_motion, [&](size_t d, const PlaneMotion& m) {
-    return passed(d, apices_[d].pos - apices_[d - 1].pos, m(apices_[j + 1].pos) - apices_[d].pos);
+    return passed(d, path_.apices[d].pos - path_.apices[d - 1].pos, m(path_.apices[j + 1].pos) - path_.apices[d].pos);
   });
   // Ahead, from the apex the path now leaves: the layout beyond each vertex passed turns about it.
-  const Vec2 from = apices_[j - back].pos;
+  const Vec2 from = path_.apices[j - back].pos;
   PlaneMotion ahead_motion;
   ahead = run(+1, ahead_motion, [&](size_t d, const PlaneMotion& m) {
-    const Vec2 here = m(apices_[d].pos);
-    return passed(d, here - from, m(apices_[d + 1].pos) - here);
+    const Vec2 here = m(path_.apices[d].pos);
+    return passed(d, here - from, m(path_.apices[d + 1].pos) - here);
   });
   if (back + ahead - 2 < least) return ahead = 1;
   return back;
@@ -594,8 +594,8 @@ size_t Straightener::slide(size_t j, size_t& ahead) {
 // faces there. When the chord fails the pass makes the zipper or semi-star instead; so it does from
 // then on for a vertex whose chord did not shorten the path (no_chord_).
 bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
-  const int n = static_cast<int>(strip_.size());
-  const Apex &p = apices_[j - 1], &q = apices_[j + 1];
+  const int n = static_cast<int>(path_.strip.size());
+  const Apex &p = path_.apices[j - 1], &q = path_.apices[j + 1];
   const Vec2 o = p.pos;
   Vec2 d = q.pos - p.pos;
   auto side = [&](const Vec2& c) { return cross(d, c - o); };  // > 0: left of the line
@@ -605,11 +605,11 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   std::vector<std::array<Vec2, 3>>& laid = walk_laid_;
   std::vector<int8_t>& exits = walk_exits_;
   size_t around = 0;
-  int first = 0, f = strip_[0];
+  int first = 0, f = path_.strip[0];
   int on_strip = 0;  // strip index of f while the walk follows the strip (its layout is known), else -1
   std::array<Vec2, 3> cf, cg;
   // Where the walk is on the strip after entering face g from strip face `at` (-1: off it).
-  auto follow_strip = [&](int at, int g) { return at >= 0 && at + 1 < n && strip_[at + 1] == g ? at + 1 : -1; };
+  auto follow_strip = [&](int at, int g) { return at >= 0 && at + 1 < n && path_.strip[at + 1] == g ? at + 1 : -1; };
   // Into the face across edge e of f. (Every face of a walk goes through it: inlined, f, cf and
   // on_strip stay in registers.)
   auto step = [&](int e) __attribute__((always_inline)) {
@@ -618,7 +618,7 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
     on_strip = follow_strip(on_strip, g);
     ++walked_;
     if (on_strip >= 0) {
-      cf = unfolded_.corners[on_strip];
+      cf = path_.unfolded.corners[on_strip];
     } else {
       lay_across(mesh_, f, e, cf, cg);
       cf = cg;
@@ -635,7 +635,7 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   enum class Trace { kFailed, kReached, kPassed };
   Vec2 at;
   auto passed = [&]() {
-    const Vec3 x = q.vertex >= 0 ? mesh_.positions[q.vertex] : eval_position(mesh_, end_);
+    const Vec3 x = q.vertex >= 0 ? mesh_.positions[q.vertex] : eval_position(mesh_, path_.end);
     return lay_point(mesh_, f, cf, x, at) ? Trace::kPassed : Trace::kFailed;
   };
   // Whether the line leaves p through face g laid at c (its corner at p holds the line).
@@ -646,16 +646,16 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   // Around p, on from its first strip face, to the face whose corner holds the line.
   auto turn_around_p = [&]() {
     other.clear(), laid.clear(), exits.clear();
-    first = 0, f = strip_[0], on_strip = 0;
-    cf = unfolded_.corners[0];
+    first = 0, f = path_.strip[0], on_strip = 0;
+    cf = path_.unfolded.corners[0];
     if (p.vertex >= 0) {
       first = room.p_first;
       const bool left = on_left(p);
-      f = strip_[first];
-      cf = unfolded_.corners[first];
+      f = path_.strip[first];
+      cf = path_.unfolded.corners[first];
       on_strip = first;
       for (int steps = 0; !leaves_p(f, cf); ++steps) {
-        if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == strip_[first]) return false;
+        if (steps > 64 || !step(edge_around(mesh_, f, p.vertex, left)) || f == path_.strip[first]) return false;
       }
     }
     around = other.size();
@@ -677,7 +677,7 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   };
   // Along the line from f on.
   auto along = [&]() {
-    for (size_t steps = exits.size(); q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != strip_.back();
+    for (size_t steps = exits.size(); q.vertex >= 0 ? !contains_vertex(mesh_, f, q.vertex) : f != path_.strip.back();
          ++steps) {
       const int e = exit_edge(cf);
       if (e < 0 || steps > 4 * static_cast<size_t>(n)) return Trace::kFailed;
@@ -685,16 +685,16 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
       exits.push_back(static_cast<int8_t>(e));
       if (!step(e)) return Trace::kFailed;
     }
-    at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)] : on_face(cf, end_);
+    at = q.vertex >= 0 ? cf[corner_of(mesh_, f, q.vertex)] : on_face(cf, path_.end);
     return Trace::kReached;
   };
   // The walk along a new d: as far as it takes the same way as the last one (the same turn around
   // p, the same exits from the same faces, laid alike), the last one's; on from where they part.
   auto walk_again = [&]() {
-    const std::array<Vec2, 3>* c = &unfolded_.corners[first];
+    const std::array<Vec2, 3>* c = &path_.unfolded.corners[first];
     size_t s = 0;
     if (p.vertex >= 0) {
-      for (int g = strip_[first];; ++s) {
+      for (int g = path_.strip[first];; ++s) {
         const bool holds = leaves_p(g, *c);
         if (s == around && holds) break;
         if (s == around || holds) return turn_around_p() ? along() : Trace::kFailed;
@@ -705,7 +705,7 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
     for (; m < exits.size() && exit_edge(*c) == exits[m] && !past_q(*c, exits[m]); ++m) c = &laid[s++];
     cf = *c;
     other.resize(s), laid.resize(s), exits.resize(m);
-    f = s == 0 ? strip_[first] : other[s - 1];
+    f = s == 0 ? path_.strip[first] : other[s - 1];
     on_strip = first;
     for (int g : other) on_strip = follow_strip(on_strip, g);
     return along();
@@ -720,13 +720,13 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   if (traced != Trace::kReached) return false;
   // The path from p to q through the line's faces is at least |at - o| long, so the chord cannot
   // help unless that beats the way by v.
-  if ((at - o).norm() >= (apices_[j].pos - p.pos).norm() + (q.pos - apices_[j].pos).norm()) return false;
+  if ((at - o).norm() >= (path_.apices[j].pos - p.pos).norm() + (q.pos - path_.apices[j].pos).norm()) return false;
   int last = n - 1;
   if (q.vertex >= 0) {  // around q, on the side the line passes it, to its strip faces
     const bool left = side(at) > 0;
     for (int steps = 0;; ++steps) {
       int m = room.q_first;
-      while (m <= room.q_last && strip_[m] != f) ++m;
+      while (m <= room.q_last && path_.strip[m] != f) ++m;
       if (m <= room.q_last) {
         last = m;
         break;
@@ -734,7 +734,7 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
       if (steps > 64 || !step(edge_around(mesh_, f, q.vertex, left))) return false;
     }
   }
-  if (!other.empty() && other.back() == strip_[last]) other.pop_back(), laid.pop_back();
+  if (!other.empty() && other.back() == path_.strip[last]) other.pop_back(), laid.pop_back();
   if (last <= first) return false;
   flip.first = first, flip.last = last;
   flip.other.swap(other);  // (the walk's buffers are scratch: the next walk clears them)
@@ -750,10 +750,10 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
 void Straightener::apply(const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u,
                          Splice& splice) {
   u.faces.clear(), u.corners.clear(), u.portals.clear();
-  splice.path = &made_;
+  splice.path = &path_.made;
   splice.between.clear();
   splice.lo = chosen.front()->first;
-  append_moved(u, unfolded_, 0, chosen.front()->first + 1, PlaneMotion{});
+  append_moved(u, path_.unfolded, 0, chosen.front()->first + 1, PlaneMotion{});
   PlaneMotion moved;
   for (size_t i = 0; i < chosen.size(); ++i) {
     const Flip& f = *chosen[i];
@@ -764,15 +764,15 @@ void Straightener::apply(const std::vector<const Flip*>& chosen, std::vector<int
     } else {
       for (int face : f.other) append_laid(mesh_, u, face);
     }
-    append_laid(mesh_, u, strip_[f.last]);
-    moved = PlaneMotion::between(unfolded_.corners[f.last], u.corners.back());
+    append_laid(mesh_, u, path_.strip[f.last]);
+    moved = PlaneMotion::between(path_.unfolded.corners[f.last], u.corners.back());
     splice.hi = static_cast<int>(u.faces.size()) - 1;
     splice.shift = f.last - splice.hi;
     splice.motion = moved;
     if (i + 1 < chosen.size())  // the portals up to the next change's first face agree
       splice.between.push_back({splice.hi, chosen[i + 1]->first - splice.shift, splice.shift, moved});
-    const size_t next = i + 1 < chosen.size() ? chosen[i + 1]->first + 1 : strip_.size(), joint = u.faces.size();
-    append_moved(u, unfolded_, f.last + 1, next, moved);
+    const size_t next = i + 1 < chosen.size() ? chosen[i + 1]->first + 1 : path_.strip.size(), joint = u.faces.size();
+    append_moved(u, path_.unfolded, f.last + 1, next, moved);
     join(mesh_, u, joint);
   }
   out.assign(u.faces.begin(), u.faces.end());
@@ -789,7 +789,7 @@ void Straightener::apply(const std::vector<const Flip*>& chosen, std::vector<int
   if (repeated || seen != added) {
     splice.path = nullptr;
     remove_loops(out, face_marks_);
-    unfold_strip(mesh_, out, u, &unfolded_);
+    unfold_strip(mesh_, out, u, &path_.unfolded);
   }
 }
 

@@ -114,11 +114,11 @@ class Straightener {
                   PathStats* stats = nullptr);
 
   // ---- Queries: the strip being straightened ----
-  const std::vector<int>& strip() const { return strip_; }
-  const UnfoldedStrip& unfolded() const { return unfolded_; }
+  const std::vector<int>& strip() const { return path_.strip; }
+  const UnfoldedStrip& unfolded() const { return path_.unfolded; }
   // Its funnel path (apices where it goes straight on dropped) and that path's length in the plane.
-  const std::vector<Apex>& apices() const { return apices_; }
-  double length() const { return length_; }
+  const std::vector<Apex>& apices() const { return path_.apices; }
+  double length() const { return path_.length; }
   // The faces of the strip around vertex v, from the face at index `at` (clamped to the strip):
   // strip[first..last], or false when that face does not hold v.
   bool run_of(int v, int at, int& first, int& last) const;
@@ -214,14 +214,17 @@ class Straightener {
   std::vector<double> angle_sums_;
 
   // The path: its end points (on the strip's first and last faces; flips keep those faces), the
-  // strip, its unfolding, its funnel path (`made_`: the funnel's own apices, before those where it
+  // strip, its unfolding, its funnel path (`made`: the funnel's own apices, before those where it
   // goes straight on are dropped) and that path's length.
-  MeshPoint start_, end_;
-  std::vector<int> strip_;
-  UnfoldedStrip unfolded_;
-  std::vector<Apex> apices_, made_;
-  double length_ = 0;
-  bool laid_ = false;  // the above are begin()'s, no pass since
+  struct Path {
+    MeshPoint start, end;
+    std::vector<int> strip;
+    UnfoldedStrip unfolded;
+    std::vector<Apex> apices, made;
+    double length = 0;
+  };
+  Path path_;
+  bool laid_ = false;  // path_ is begin()'s, no pass since
   // The strip being tried, likewise (laid out from the strip's by `apply`).
   std::vector<int> trial_;
   UnfoldedStrip trial_unfolded_;
@@ -259,11 +262,7 @@ class Straightener {
   std::vector<Window> windows_;
   std::vector<Flip> window_flips_;
   std::vector<size_t> candidates_;
-  MeshPoint outer_start_, outer_end_;
-  std::vector<int> outer_strip_;
-  UnfoldedStrip outer_unfolded_;
-  std::vector<Apex> outer_apices_, outer_made_;
-  double outer_length_ = 0;
+  Path outer_;
   bool in_window_ = false, windows_off_ = false;
 };
 
