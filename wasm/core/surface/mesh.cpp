@@ -422,11 +422,12 @@ MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& p) {
   return {mesh.file_face[p.face], p.uv};
 }
 
-MeshPoint vertex_point(const TriMesh& mesh, int vertex) {
-  const int f = mesh.vertex_face[vertex];
+MeshPoint vertex_point(const TriMesh& mesh, int vertex) { return corner_point(mesh, mesh.vertex_face[vertex], vertex); }
+
+MeshPoint corner_point(const TriMesh& mesh, int face, int vertex) {
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
-  w[corner_of(mesh, f, vertex)] = 1;
-  return from_weights(f, w);
+  w[corner_of(mesh, face, vertex)] = 1;
+  return from_weights(face, w);
 }
 
 PointLocation locate(const TriMesh& mesh, const MeshPoint& p, double eps) {

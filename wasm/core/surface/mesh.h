@@ -112,8 +112,9 @@ inline MeshPoint from_weights(int face, const Eigen::Vector3d& w) { return {face
 // point on a duplicate face becomes the same point on the face it repeats).
 MeshPoint to_mesh_point(const TriMesh& mesh, const MeshPoint& file_point);
 MeshPoint to_file_point(const TriMesh& mesh, const MeshPoint& mesh_point);
-// A mesh vertex as a point on its vertex_face.
+// A mesh vertex as a point on its vertex_face (or on `face`, one of its faces).
 MeshPoint vertex_point(const TriMesh& mesh, int vertex);
+MeshPoint corner_point(const TriMesh& mesh, int face, int vertex);
 
 // Index (0..2) of vertex v in face f, or -1.
 inline int corner_of(const TriMesh& mesh, int face, int vertex) {

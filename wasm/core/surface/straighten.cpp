@@ -216,9 +216,7 @@ bool Straightener::pass(PathStats* stats) {
   chosen_.clear();
   for (size_t i = 0; i < used_; ++i) chosen_.push_back(&flips_[i]);
   std::sort(chosen_.begin(), chosen_.end(), [](const Flip* x, const Flip* y) { return x->first < y->first; });
-  Splice& splice = splice_;
-  apply(chosen_, trial_, trial_unfolded_, splice);
-  double trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
+  double trial_length = lay_trial(chosen_);
   if (!(trial_length < path_.length - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
     // Together they did not shorten the path: fall back to the largest turn alone. The others'
     // zippers and chords are not tried again (a semi-star at a reflex vertex shortens the path,
@@ -231,8 +229,7 @@ bool Straightener::pass(PathStats* stats) {
       if (f->chain) no_chain_.insert(f->vertex);
     }
     chosen_.assign(1, best);
-    apply(chosen_, trial_, trial_unfolded_, splice);
-    trial_length = shorten(trial_unfolded_, trial_made_, trial_apices_, splice.path ? &splice : nullptr);
+    trial_length = lay_trial(chosen_);
   }
   if (keep_trial(trial_length)) {
     if (stats) {
@@ -253,13 +250,15 @@ bool Straightener::pass(PathStats* stats) {
   return true;
 }
 
+double Straightener::lay_trial(const std::vector<const Flip*>& chosen) {
+  apply(chosen, trial_.strip, trial_.unfolded, splice_);
+  return shorten(trial_.unfolded, trial_.made, trial_.apices, splice_.path ? &splice_ : nullptr);
+}
+
 bool Straightener::keep_trial(double trial_length) {
   if (!(trial_length < path_.length - 1e-12 * mesh_.scale)) return false;
-  path_.strip.swap(trial_);
-  std::swap(path_.unfolded, trial_unfolded_);
-  path_.apices.swap(trial_apices_);
-  path_.made.swap(trial_made_);
-  path_.length = trial_length;
+  trial_.start = path_.start, trial_.end = path_.end, trial_.length = trial_length;
+  std::swap(path_, trial_);
   return true;
 }
 
@@ -322,18 +321,14 @@ bool Straightener::windowed_pass(PathStats* stats) {
   if (made == 0) return true;
   chosen_.clear();
   for (size_t i = 0; i < made; ++i) chosen_.push_back(&window_flips_[i]);
-  apply(chosen_, trial_, trial_unfolded_, splice_);
-  windows_off_ = !keep_trial(shorten(trial_unfolded_, trial_made_, trial_apices_, splice_.path ? &splice_ : nullptr));
+  windows_off_ = !keep_trial(lay_trial(chosen_));
   return true;
 }
 
 bool Straightener::straighten_window(size_t ja, size_t jb, int first, int last, Flip& flip, PathStats* stats) {
-  auto at_corner = [&](int face, int v) {
-    const int k = corner_of(mesh_, face, v);
-    return MeshPoint{face, Vec2(k == 1, k == 2)};
-  };
-  const MeshPoint a = ja == 0 ? path_.start : at_corner(path_.strip[first], path_.apices[ja].vertex);
-  const MeshPoint b = jb + 1 == path_.apices.size() ? path_.end : at_corner(path_.strip[last], path_.apices[jb].vertex);
+  const MeshPoint a = ja == 0 ? path_.start : corner_point(mesh_, path_.strip[first], path_.apices[ja].vertex);
+  const MeshPoint b =
+      jb + 1 == path_.apices.size() ? path_.end : corner_point(mesh_, path_.strip[last], path_.apices[jb].vertex);
   // The path aside while the window's is straightened (frozen vertices stay: the same path there).
   std::swap(path_, outer_);
   path_.start = a, path_.end = b;

@@ -174,6 +174,8 @@ class Straightener {
   // leaves it; a chord's faces where its trace laid them (moved likewise); other faces laid anew.
   // `splice` tells the funnel where the strips agree (splice.path null when a loop had to be cut).
   void apply(const std::vector<const Flip*>& chosen, std::vector<int>& out, UnfoldedStrip& u, Splice& splice);
+  // The trial path with `chosen` made (apply), and its length (shorten).
+  double lay_trial(const std::vector<const Flip*>& chosen);
   // Makes the trial strip the strip if its path (`trial_length` long) is shorter.
   bool keep_trial(double trial_length);
   // A pass that straightens the windows around its reflex vertices (order_) to the end, each on its
@@ -225,10 +227,8 @@ class Straightener {
   };
   Path path_;
   bool laid_ = false;  // path_ is begin()'s, no pass since
-  // The strip being tried, likewise (laid out from the strip's by `apply`).
-  std::vector<int> trial_;
-  UnfoldedStrip trial_unfolded_;
-  std::vector<Apex> trial_apices_, trial_made_;
+  // The path being tried, likewise (its strip laid out from the path's by `apply`).
+  Path trial_;
   Splice splice_;  // how the trial strip differs from the strip
 
   // Vertices frozen (with the largest turn they are frozen for), and those whose zipper / chord
