@@ -340,6 +340,75 @@ TEST(StraightenerChord, LaysTheFacesTheStraightLineCrosses) {
   EXPECT_LE(s.shorten(u, raw, after, splice.path ? &splice : nullptr), s.length() - bend + 1e-12);
 }
 
+TEST(StraightenerChord, AWalkThatFailedBetweenTheSameApicesIsNotWalkedAgain) {
+  // A plane with a square hole above the bend of a V-shaped strip: the straight line between the
+  // bend's neighbouring apices runs into the hole, so the chord fails (its walk meets the boundary),
+  // and it would fail the same way in every pass while those apices stay.
+  testing::Arrays grid = testing::planar_grid(24, 1, 0);
+  std::vector<int> kept;
+  for (size_t t = 0; t < grid.triangles.size(); t += 3) {
+    Vec3 c = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) c += Vec3(grid.positions.data() + 3 * grid.triangles[t + k]) / 3;
+    if (c.x() > 0.42 && c.x() < 0.58 && c.y() > 0.35 && c.y() < 0.95) continue;
+    kept.insert(kept.end(), grid.triangles.begin() + t, grid.triangles.begin() + t + 3);
+  }
+  grid.triangles = kept;
+  const TriMesh mesh = testing::build(grid);
+  const MeshPoint a = at_xy(mesh, 0.15, 0.85), b = at_xy(mesh, 0.85, 0.85);
+  const std::vector<int> strip = strip_through(mesh, {a, at_xy(mesh, 0.51, 0.06), b});
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  s.begin(a, b, strip);
+  const std::vector<Apex>& apices = s.apices();
+  // The bend whose neighbouring apices' line crosses the hole (the plane: the layout is space's).
+  auto place = [&](const Apex& x, const MeshPoint& end) -> Vec2 {
+    return (x.vertex >= 0 ? mesh.positions[x.vertex] : eval_position(mesh, end)).head<2>();
+  };
+  size_t j = 0;
+  for (size_t i = 1; i + 1 < apices.size() && j == 0; ++i) {
+    const Vec2 p = place(apices[i - 1], a), q = place(apices[i + 1], b);
+    for (double t = 0; t <= 1; t += 0.01) {
+      const Vec2 x = p + t * (q - p);
+      if (x.x() > 0.45 && x.x() < 0.55 && x.y() > 0.4 && x.y() < 0.9) j = i;
+    }
+  }
+  ASSERT_GT(j, 0u) << "no bend whose chord crosses the hole";
+  const int n = static_cast<int>(strip.size());
+  ChordRoom room{0, n - 1, n - 1};
+  int unused;
+  if (apices[j - 1].vertex >= 0) {
+    ASSERT_TRUE(s.run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused));
+  }
+  if (apices[j + 1].vertex >= 0) {
+    ASSERT_TRUE(s.run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last));
+  }
+  int first, last;
+  ASSERT_TRUE(s.run_of(apices[j].vertex, apices[j].portal, first, last));
+  Flip flip;
+  ASSERT_TRUE(s.flip(j, turn_at(apices, j), first, last, flip));
+  const Flip semi_star = flip;
+  // The chord itself walks towards the hole and fails, leaving the semi-star as it was.
+  int walked = s.walked();
+  EXPECT_FALSE(s.chord(j, room, flip));
+  EXPECT_GT(s.walked(), walked + 3);
+  EXPECT_EQ(flip.other, semi_star.other);
+  // The pass's way to it: the first time it walks (and fails) alike, then it is not walked again.
+  walked = s.walked();
+  EXPECT_FALSE(s.walk_chord(j, room, flip));
+  const int first_walk = s.walked() - walked;
+  EXPECT_GT(first_walk, 3);
+  walked = s.walked();
+  EXPECT_FALSE(s.walk_chord(j, room, flip));
+  EXPECT_EQ(s.walked(), walked);
+  EXPECT_EQ(flip.other, semi_star.other);
+  EXPECT_FALSE(flip.chord);
+  // begin() forgets it with the path's other per-vertex state: the next path walks it again.
+  s.begin(a, b, strip);
+  walked = s.walked();
+  EXPECT_FALSE(s.walk_chord(j, room, flip));
+  EXPECT_EQ(s.walked() - walked, first_walk);
+}
+
 // ---- Apply --------------------------------------------------------------------------------------
 
 TEST(StraightenerApply, MakesSeveralFlipsAtOnceAsAFreshLayoutWould) {

@@ -43,7 +43,7 @@ void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vecto
 }
 
 void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip) {
-  frozen_.clear(), frozen_cos_.clear(), no_chain_.clear(), no_chord_.clear();
+  frozen_.clear(), frozen_cos_.clear(), no_chain_.clear(), no_chord_.clear(), failed_chords_.clear();
   windows_off_ = false;
   // The strip laid out last for these end points, no pass since (a candidate measured before it was
   // chosen, GeodesicSolver::shortest_path): its layout and funnel path stand.
@@ -202,7 +202,7 @@ bool Straightener::pass(PathStats* stats) {
       const size_t back = slide(j, ahead);
       if (back > 1 || ahead > 1) zipper(j, made, back, ahead), slid = made.chain;
     }
-    if (!slid && (!try_chord || !chord(j, room, made))) zipper(j, made);
+    if (!slid && (!try_chord || !walk_chord(j, room, made))) zipper(j, made);
     if (!overlaps(made.first, made.last)) {
       std::fill(taken_.begin() + made.first, taken_.begin() + made.last + 1, 1);
       ++used_;
@@ -587,7 +587,20 @@ size_t Straightener::slide(size_t j, size_t& ahead) {
 // keeps the first as far as the new line crosses the same edges. The strip then runs around p from
 // its faces there to the line, along the line, and around q (on the side the line passes it) to its
 // faces there. When the chord fails the pass makes the zipper or semi-star instead; so it does from
-// then on for a vertex whose chord did not shorten the path (no_chord_).
+// then on for a vertex whose chord did not shorten the path (no_chord_), and while the neighbouring
+// apices stay for one whose walk failed (walk_chord: on the knotted tube of BENCHMARKS.md, 40% of
+// the failed walks, which enter three times the faces of one that arrives, were such repeats).
+bool Straightener::walk_chord(size_t j, const ChordRoom& room, Flip& flip) {
+  // Between the same neighbouring apices the line is the same as far as the path's layout between
+  // them is; a walk that failed there is not walked again.
+  const double between = static_cast<double>(path_.apices[j - 1].vertex) * 4294967296.0 + path_.apices[j + 1].vertex;
+  const int v = path_.apices[j].vertex;
+  if (const double* failed = failed_chords_.find(v); failed && *failed == between) return false;
+  if (chord(j, room, flip)) return true;
+  failed_chords_.insert(v, between);
+  return false;
+}
+
 bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
   const int n = static_cast<int>(path_.strip.size());
   const Apex &p = path_.apices[j - 1], &q = path_.apices[j + 1];

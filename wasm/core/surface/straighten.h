@@ -122,6 +122,8 @@ class Straightener {
   // The faces of the strip around vertex v, from the face at index `at` (clamped to the strip):
   // strip[first..last], or false when that face does not hold v.
   bool run_of(int v, int at, int& first, int& last) const;
+  // Faces the chords' walks entered since the last pass counted them (PathStats::walked_faces).
+  int walked() const { return walked_; }
   // The vertices the last zipper flipped, in strip order.
   const std::vector<int>& zipper_pivots() const { return pivots_; }
   // Bytes held for the mesh (the vertex angle sums; the scratch of the longest path is not counted).
@@ -169,6 +171,8 @@ class Straightener {
   // around q to its strip faces. False (flip unusable) when the line meets a boundary or a vertex,
   // misses q twice, or cannot make the path shorter; `room` bounds the faces it may replace.
   bool chord(size_t j, const ChordRoom& room, Flip& flip);
+  // `chord`, unless apex j's chord failed between the same neighbouring apices' vertices before.
+  bool walk_chord(size_t j, const ChordRoom& room, Flip& flip);
   // The strip with `chosen` made (non-overlapping, in strip order) into `out`, and its layout into
   // `u`: the strip's own between the changes, each piece moved rigidly to where the change before it
   // leaves it; a chord's faces where its trace laid them (moved likewise); other faces laid anew.
@@ -234,6 +238,9 @@ class Straightener {
   // Vertices frozen (with the largest turn they are frozen for), and those whose zipper / chord
   // did not shorten the path (they get the semi-star from then on).
   VertexSet frozen_, no_chain_, no_chord_;
+  // Per vertex, the neighbouring apices' vertices (p·2^32 + q) between which its chord's walk last
+  // failed.
+  VertexSet failed_chords_;
   // Per frozen vertex, the cosine of the largest turn it is frozen for (with is_frozen's 1e-9), or
   // -2 when that is π or more (frozen for every turn).
   VertexSet frozen_cos_;
