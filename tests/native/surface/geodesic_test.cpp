@@ -510,6 +510,44 @@ TEST(UnfoldStrip, PiecesMovedRigidlyAndJoinedMatchAFreshLayout) {
   }
 }
 
+TEST(UnfoldStrip, AFaceLaidALittleOffDoesNotScaleTheFacesLaidOnFromIt) {
+  // Phase (iii) lays new faces on from the current layout (a chord's walk, a flip's faces), and
+  // each pass's layout starts from the last one's: an edge laid 1e-6 too long must not make every
+  // face laid on from it 1e-6 too large, or the error reaches the far end of a long strip magnified
+  // by its length (on the coil of BENCHMARKS.md it grew ten times a pass). A long strip along a coil:
+  // its first face laid a millionth too large, the rest on from it.
+  const TriMesh mesh = testing::build(testing::coil(800, 16));
+  GeodesicSolver solver(mesh);
+  GeodesicPath path;
+  ASSERT_TRUE(solver.shortest_path(testing::point_at(mesh, mesh.positions[0]),
+                                   testing::point_at(mesh, mesh.positions[mesh.positions.size() - 40]), path));
+  const std::vector<int>& strip = path.strip;
+  ASSERT_GT(strip.size(), 500u);
+  UnfoldedStrip fresh, off;
+  unfold_strip(mesh, strip, fresh);
+  std::array<Vec2, 3> first = fresh.corners[0];
+  for (Vec2& c : first) c = first[0] + (1 + 1e-6) * (c - first[0]);
+  append_face(mesh, off, strip[0], first);
+  for (size_t i = 1; i < strip.size(); ++i) append_laid(mesh, off, strip[i]);
+  double longest = 0, worst_edge = 0;
+  for (size_t i = 1; i < strip.size(); ++i) {
+    const auto& t = mesh.triangles[strip[i]];
+    for (int k = 0; k < 3; ++k) {
+      const double in_space = (mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]).norm();
+      longest = std::max(longest, in_space);
+      worst_edge = std::max(worst_edge, std::abs((off.corners[i][(k + 1) % 3] - off.corners[i][k]).norm() - in_space));
+    }
+  }
+  // The error stays that of the one edge (about 1e-6 of an edge), however far the strip goes on...
+  EXPECT_LT(worst_edge, 2e-6 * longest);
+  // ...and the far end lies where a fresh layout puts it, seen from the first face, within a few
+  // such errors (scaled, it would be off by a millionth of the strip's length: ~500 edges).
+  const size_t n = strip.size() - 1;
+  const double reach = (fresh.corners[n][0] - fresh.corners[0][0]).norm();
+  ASSERT_GT(reach, 100 * longest);
+  EXPECT_LT(std::abs((off.corners[n][0] - off.corners[0][0]).norm() - reach), 10e-6 * longest);
+}
+
 TEST(UnfoldStrip, MotionsMoveEachCoordinateByItsFormula) {
   // PlaneMotion moves both coordinates at once (append_moved moves most of a trial strip each pass);
   // lane by lane it must round as (c x - s y + t_x, s x + c y + t_y) does, so that trial strips, and

@@ -79,16 +79,24 @@ void lay_across(const TriMesh& mesh, int f, int k, const std::array<Vec2, 3>& cf
   const Vec2 pa = cf[k], pb = cf[(k + 1) % 3], edge = pa - pb;
   cg[ka] = pa;
   cg[kb] = pb;
-  // c is left of b -> a. Its coordinates along and across edge b -> a, as multiples of the edge
-  // (the unfolded edge has the same length as in space).
+  // c is left of b -> a: its distances along and across edge b -> a in space, laid along the
+  // direction of the laid edge. (Not as multiples of the laid edge: where rounding or an earlier
+  // layout made it a little longer or shorter than in space, those multiples would scale every face
+  // laid on from there, and a chord's walk of hundreds of faces carried that scale to where it
+  // rejoins the strip; each pass's layout then started from the last one's, and the mismatch grew
+  // ten times a pass on long coil paths: a funnel path 5e-7 longer in its layout than in space.)
   const int c = tg[kc];
   const Vec3 e = mesh.positions[a] - mesh.positions[b], w = mesh.positions[c] - mesh.positions[b];
-  const double e2 = e.squaredNorm();
-  if (!(e2 > 0)) {
+  const double e2 = e.squaredNorm(), laid2 = edge.squaredNorm();
+  if (!(e2 > 0) || !(laid2 > 0)) {
     cg[kc] = place_left(pb, pa, w.norm(), (mesh.positions[c] - mesh.positions[a]).norm());
     return;
   }
-  const double inv = 1 / e2;
+  // 1 / (|e| |laid edge|): 1 / e2 corrected by the ratio r of their squares (its series to r^2;
+  // laid edges are within rounding of their length in space but for a layout's drift).
+  double inv = 1 / e2;
+  const double r = laid2 * inv - 1;
+  inv = std::abs(r) < 1e-4 ? inv * (1 - r * (0.5 - 0.375 * r)) : 1 / std::sqrt(e2 * laid2);
   cg[kc] = pb + (w.dot(e) * inv) * edge + (w.cross(e).norm() * inv) * Vec2(-edge.y(), edge.x());
 }
 
