@@ -516,12 +516,18 @@ was set; the header says what each option does).
   faces, not the mesh's (2026-12-03): landmarks go to the largest components of at least that many
   faces, so that a scan's specks of debris (the Stanford dragon's 150) do not take them all (section
   "Surface at scale", "Scans with debris").
-- **chord_min_turn = 0.01 rad** (phase (iii)). Late in the straightening the path bends a little at
-  apices far apart, and a chord there walks all the way between the neighbouring apices for a small
-  gain; smaller bends get the semi-star (and zipper) flip. On random whole-surface curves (OLR, 5
-  levels, wasm, each curve traced by both builds in turn), 0.01 takes 4-7% off the trace time on
-  spot_loop2_369k and 1% on nefertiti, with curves as long within 0.1%; 0.03 saves 1.5% more on
-  spot_loop2_369k but settles more first-level sides on other (longer) local geodesics.
+- **chord_min_turn = 0.03 rad** (phase (iii); 0.01 until 2026-12-04). Late in the straightening the
+  path bends a little at apices far apart, and a chord there walks all the way between the
+  neighbouring apices for a small gain; smaller bends get the semi-star (and zipper) flip. On random
+  whole-surface curves (OLR, 5 levels, wasm, each curve traced by both builds in turn), 0.01 took 4-7%
+  off the trace time on spot_loop2_369k and 1% on nefertiti against no bound; 0.03 then settled more
+  first-level sides on other (longer) local geodesics. After the slides, windows, landmark descent
+  and the layout fix of 2026-12-04 (lay_across no longer scales faces laid on from a drifted edge,
+  which 0.03 had exposed: a coil path's layout 5e-7 longer than in space), 0.03 against 0.01 in one
+  wasm module (bench:ab, 100 curves, best of 2, with the layout fix): per-curve median / total 0.875x
+  / 0.872x on the knotted tube, 0.952x / 0.937x on the folded body, 0.957x / 0.960x on spot_loop2_369k,
+  0.964x / 0.956x on nefertiti, 0.982x / 0.984x on the coil, 0.987x / 0.986x on the noisy spot; mean
+  curve lengths -0.05%, 0.00%, 0.00%, -0.16%, 0.00%, +0.03%.
 - **slides = true, slide_min = 4, slide_gap = 2** (phase (iii), 2026-12-03; Straightener::slide). A path
   pressed against a row of saddle vertices bends at each by up to its angle excess and stays locally
   shortest; it leaves the row with a larger bend, and flipping that bend makes the vertex before it the

@@ -14,7 +14,7 @@ struct ShortestPathOptions {
   // ---- Phase (iii), the straightening (straighten.h) ----
   bool straighten = true;        // run phase (iii) at all (else the funnel path of the initial strip)
   bool chords = true;            // flips along the line between apices (else semi-stars and zippers only)
-  double chord_min_turn = 0.01;  // radians: a chord only where the path turns by more (else a semi-star)
+  double chord_min_turn = 0.03;  // radians: a chord only where the path turns by more (else a semi-star)
   bool slides = true;            // a bend that would slide along a row of saddle vertices is moved at once
   int slide_min = 4;             // ... when that passes at least this many bends (else a pass moves it)
   int slide_gap = 2;             // a slide passes at most this many untouched vertices between two bends
