@@ -354,6 +354,29 @@ of 4 moves 14 of those paths (8 longer, the worst +1.6%). At the defaults that b
 windows (no curve changed); windows only for 4 to 16 reflex vertices: +0.013% to +0.045% there, 0.80x to 0.62x on
 the coil; at most 2 to 16 passes per window: no less drift.`;
 
+const CHORDS_NOTE = `Chords and layouts (2026-12-04). On the knotted tube 31% of chord walks failed (the line met a boundary or a
+vertex, or passed the far apex twice), and a failed walk entered 3.3 times the faces of one that arrived (880
+against 265): 40% of them were the same vertex's chord between the same neighbouring apices, walked again pass
+after pass. Straightener::walk_chord remembers, per vertex, the neighbouring apices its walk last failed between
+and does not walk it again while they stay: native instructions 0.94x on the knotted tube, 0.98x on the coil, every
+path the same on 9 meshes; bench:ab (100 curves) per-curve median 0.935x on the knotted tube, 0.98-0.99x on the
+folded body, spot_loop2_369k and nefertiti, 1.00x on the coil, no curve changed. chord_min_turn 0.03 then showed
+that a path's layout could drift from space: lay_across laid a face as multiples of the laid edge, so an edge laid
+a little long scaled every face laid on from it; a chord's walk carried that scale hundreds of faces, each pass's
+layout started from the last one's, and the mismatch grew about ten times a pass (a 96k-triangle coil path's funnel
+length 5e-7 longer than the path in space by its 13th pass; 2e-9 at chord_min_turn 0.01). Faces are now laid at
+their distances in space along the laid edge's direction (tests/native/surface/geodesic_test.cpp,
+UnfoldStrip.AFaceLaidALittleOffDoesNotScaleTheFacesLaidOnFromIt): the same paths on 5 of 6 meshes, 4 of 60
+folded-body paths changed (one 9.9% shorter, -0.12% in total). Measured and dropped that day: steiner = 1 for
+shortest paths (2.1-2.3x faster on nefertiti and the knotted tube, but the tests' small noisy folded body 76-86%
+within 0.5% of exact, mountain 99% with a worst 1.008; the graph length against the straightened one does not tell
+those pairs apart); a failed pass keeping the flips of every stretch of the path that got shorter between apices
+both paths bend at (exact, and they all held) instead of the largest turn alone: 8-10% more passes on the knotted tube and the folded body; windows over
+any share of the strip: fewer passes, no less time there (native, 60 paths); no second aim for a chord
+whose walk passed the far apex (0.94x on the knotted tube, but coil paths +0.03%); in the refined search, measuring
+a node's way by u and round the edge's ends only where the pseudo-source does not see it (exact by the triangle
+inequality): 0.99x instructions, the search's cost is spread over its windows, queue and records.`;
+
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis
 is 0.88, one less the tube radius, over all of the path but ramps of about a twentieth of it at each end: a path
@@ -514,6 +537,8 @@ ${EVENING_NOTE}
 ${DESCENT_NOTE}
 
 ${WINDOWS_NOTE}
+
+${CHORDS_NOTE}
 
 Shortest paths between random vertex pairs (${m[0]?.geodesics.sources} sources × ${m[0]?.geodesics.targets} targets per mesh), ours
 (SurfaceMesh.shortestPath: refined search graph, funnel, flips; wasm, timed inside the module) against
