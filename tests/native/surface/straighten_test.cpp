@@ -77,6 +77,24 @@ std::vector<int> closed_fan(const TriMesh& mesh, int v) {
   return closed ? fan : std::vector<int>{};
 }
 
+// The semi-star flip of apex j of the strip being straightened, and the room its chord may take
+// (from the faces around the apex before to those around the apex after), as a pass finds them.
+void semi_star_and_room(Straightener& s, size_t j, ChordRoom& room, Flip& flip) {
+  const std::vector<Apex>& apices = s.apices();
+  const int n = static_cast<int>(s.strip().size());
+  room = ChordRoom{0, n - 1, n - 1};
+  int unused;
+  if (apices[j - 1].vertex >= 0) {
+    ASSERT_TRUE(s.run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused));
+  }
+  if (apices[j + 1].vertex >= 0) {
+    ASSERT_TRUE(s.run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last));
+  }
+  int first, last;
+  ASSERT_TRUE(s.run_of(apices[j].vertex, apices[j].portal, first, last));
+  ASSERT_TRUE(s.flip(j, turn_at(apices, j), first, last, flip));
+}
+
 // ---- Semi-star ----------------------------------------------------------------------------------
 
 TEST(StraightenerFlip, TakesTheOtherSemiStarOfAFlatVertex) {
@@ -285,19 +303,9 @@ TEST(StraightenerChord, LaysTheFacesTheStraightLineCrosses) {
   size_t j = 1;
   for (size_t i = 2; i + 1 < apices.size(); ++i)
     if (span(i) > span(j)) j = i;
-  const int n = static_cast<int>(strip.size());
-  ChordRoom room{0, n - 1, n - 1};
-  int unused;
-  if (apices[j - 1].vertex >= 0) {
-    ASSERT_TRUE(s.run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused));
-  }
-  if (apices[j + 1].vertex >= 0) {
-    ASSERT_TRUE(s.run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last));
-  }
-  int first, last;
-  ASSERT_TRUE(s.run_of(apices[j].vertex, apices[j].portal, first, last));
+  ChordRoom room;
   Flip flip;
-  ASSERT_TRUE(s.flip(j, turn_at(apices, j), first, last, flip));
+  ASSERT_NO_FATAL_FAILURE(semi_star_and_room(s, j, room, flip));
   ASSERT_TRUE(s.chord(j, room, flip));
   EXPECT_TRUE(flip.chord);
   ASSERT_EQ(flip.laid.size(), flip.other.size());
@@ -373,19 +381,9 @@ TEST(StraightenerChord, AWalkThatFailedBetweenTheSameApicesIsNotWalkedAgain) {
     }
   }
   ASSERT_GT(j, 0u) << "no bend whose chord crosses the hole";
-  const int n = static_cast<int>(strip.size());
-  ChordRoom room{0, n - 1, n - 1};
-  int unused;
-  if (apices[j - 1].vertex >= 0) {
-    ASSERT_TRUE(s.run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused));
-  }
-  if (apices[j + 1].vertex >= 0) {
-    ASSERT_TRUE(s.run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last));
-  }
-  int first, last;
-  ASSERT_TRUE(s.run_of(apices[j].vertex, apices[j].portal, first, last));
+  ChordRoom room;
   Flip flip;
-  ASSERT_TRUE(s.flip(j, turn_at(apices, j), first, last, flip));
+  ASSERT_NO_FATAL_FAILURE(semi_star_and_room(s, j, room, flip));
   const Flip semi_star = flip;
   // The chord itself walks towards the hole and fails, leaving the semi-star as it was.
   int walked = s.walked();
