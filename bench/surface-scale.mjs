@@ -377,6 +377,36 @@ whose walk passed the far apex (0.94x on the knotted tube, but coil paths +0.03%
 a node's way by u and round the edge's ends only where the pseudo-source does not see it (exact by the triangle
 inequality): 0.99x instructions, the search's cost is spread over its windows, queue and records.`;
 
+const TAIL_NOTE = `Measured and dropped on 2026-12-05 (native, build/exp harnesses; none of it changed the code). Where a pass's
+work goes when its flips are few: on spot_loop2_369k a spliced funnel (phase (iii)'s trial) walked 95% of its strip's
+portals (2.86 M of 3.01 M over 30 curves; it took up the known path 31 times in 10,305 funnels), on the knotted tube
+78%: with 10-20 flips a pass spread along a path of about a dozen apices, every stretch between flips is funnelled
+again, so a layout kept in pieces (moved lazily) would save only apply's share, 5% of a spot_loop2_369k curve run.
+A long spot_loop2_369k side (720 faces) took 146 passes, the last 70 each flipping 4-14 bends under 0.02 rad that
+slid back along convex vertices on the path's right, one vertex a pass, the path 2.7e-4 of its length longer than at its end; the
+next bend lay past two vertices that did not block the line between the neighbouring apices, which is why the
+zipper (consecutive blocking vertices) stops short. Flipping, with such a bend, every vertex on its side that
+blocks that line (not only consecutive ones) took that side from 146 to 72 passes, but over 40 curves
+spot_loop2_369k's passes fell 4% and its time not at all; the knotted tube took 2.0x as long (1.15x with the extra
+flips given up for the path once a pass failed with them), the folded body 0.98-1.04x; only convex vertices, or
+only bends under chord_min_turn: 1.00-1.06x. Turning the zipper's line by the excess of each vertex it flips (as
+slides do): 28,418 -> 28,206 passes on spot_loop2_369k, no faster. Zippers given up for a path after its first
+failed one (on the knotted tube a quarter of the passes' faces are passes that keep nothing, mostly a zipper that
+lengthened the path): knotted tube 0.94x (p99 48 -> 41 ms natively), folded body 1.10x (after 4 failures: 0.94x and
+0.99x, but the folded body's curves 0.08% longer); given up only where they failed more often than they held:
+no change. Chord walks that fail (knotted tube, 30 curves): 1,947 of 2,075 passed the far apex twice (the first
+shot and the re-aim), entering 886 faces each against 240 for a chord that arrived; after a first miss the re-aim
+landed 17% of the time on the knotted tube, 19% on the coil, 43% on the folded body, and the miss's angle did not
+tell which. The refined search (landmark term scaled 1 or 2) as the initial strip of curves' long sides: 15 coil
+sides 45.6 -> 173 ms, 6,524 -> 71,326 flips and longer paths (the scaled term leads the strip round the tube's
+outer side); the knotted tube 68 -> 114 ms. The exact dual-graph strip (weights 1) on 60 knotted-tube sides: 12%
+fewer flips, 1.4x the time, paths 0.36% longer; a strip round the vertex graph's shortest path (A* with weights 1,
+the edge path flipOut starts from): 55 long knotted-tube sides 97,568 -> 108,550 flips, spot_loop2_369k's 7,759 ->
+8,811 and longer paths. A failed pass trying its vertices again as plain semi-stars before the largest turn alone:
+the knotted tube's passes -7% but its time +6% (the third trial costs what the pass it saves did), the folded body
+unchanged. In the refined search, a bitmask of non-empty radix buckets: 0.2%
+fewer instructions; the window's visibility test without its division: the same paths, 1-2% faster natively.`;
+
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis
 is 0.88, one less the tube radius, over all of the path but ramps of about a twentieth of it at each end: a path
@@ -539,6 +569,8 @@ ${DESCENT_NOTE}
 ${WINDOWS_NOTE}
 
 ${CHORDS_NOTE}
+
+${TAIL_NOTE}
 
 Shortest paths between random vertex pairs (${m[0]?.geodesics.sources} sources × ${m[0]?.geodesics.targets} targets per mesh), ours
 (SurfaceMesh.shortestPath: refined search graph, funnel, flips; wasm, timed inside the module) against
