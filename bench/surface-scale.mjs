@@ -404,8 +404,24 @@ fewer flips, 1.4x the time, paths 0.36% longer; a strip round the vertex graph's
 the edge path flipOut starts from): 55 long knotted-tube sides 97,568 -> 108,550 flips, spot_loop2_369k's 7,759 ->
 8,811 and longer paths. A failed pass trying its vertices again as plain semi-stars before the largest turn alone:
 the knotted tube's passes -7% but its time +6% (the third trial costs what the pass it saves did), the folded body
-unchanged. In the refined search, a bitmask of non-empty radix buckets: 0.2%
-fewer instructions; the window's visibility test without its division: the same paths, 1-2% faster natively.`;
+unchanged. In the refined search, a bitmask of non-empty radix buckets: 0.2% fewer instructions; the window's
+visibility test without its division: the same paths, 1-2% faster natively.
+
+What would pay (2026-12-05, native, \`surface_scale_bench c2f coil|knot|folded 10 <div>\`): a strip from a coarser
+mesh's path. For the long sides (512 strip faces or more) of 10 random polygons, the side's path on the same shape
+generated 1/div as fine, its points mapped to the nearest fine face centroids and joined, then straightened on the
+fine mesh, against the default candidates (search, reverse search, descent, straightening), ms for all the sides
+(two runs): coil, half (96k triangles), 28 sides: 72-84 ms and 14,033 flips -> straightening 26-30 ms and
+2,393-2,574 flips, plus 26-32 ms for the coarse paths, total length -0.01% (1 side longer, 1 shorter); knotted
+tube, half (36k), 27 sides: 114-128 ms, 36,267 flips -> 42-46 ms, 4,835-4,919 flips, plus 37-40 ms, +0.08% (1
+longer, 3 shorter); folded body, a quarter (24k), 23 sides: 182-193 ms, 35,863 flips -> 54-58 ms, 10,727-11,591
+flips, plus 15 ms, +0.83% (2 longer, 2 shorter: one side went round the other side of a limb); the coil at a
+quarter (12 quads round the tube) no better than the default (41-48 ms, ~17,400 flips). So a proxy about half as
+fine, its own paths found from a proxy coarser again, could take a long side's time to about half; not done here:
+it needs a decimated proxy of any mesh with a correspondence to the fine one (the generated coarse shape and the
+centroid grid, whose mapping took 37-83 ms, stand in for it), and room in the memory budget (a half-size proxy with
+its own search structures is ~58 bytes per fine triangle, against 116 used of ~120: the landmarks' 16 and more would
+have to go).`;
 
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis

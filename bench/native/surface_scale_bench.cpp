@@ -25,12 +25,17 @@
 //       wasm benchmark traces them: per-curve ms (median, p90, p99, max; this thread's CPU time, so
 //       that other work on the machine does not inflate it) and work counters (median,
 //       p99); with `lengths`, every curve's polyline length too (to compare two builds' curves).
+//   surface_scale_bench c2f coil|knot|folded <polygons> <div>
+//       an experiment: the long sides of random polygons straightened from a strip that follows the
+//       side's path on the same shape generated 1/div as fine, against the default candidates.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <random>
 #include <string>
@@ -44,6 +49,7 @@
 using namespace splinekit::surface;
 using splinekit::surface::testing::Arrays;
 using Clock = std::chrono::steady_clock;
+using splinekit::Vec3;
 
 static double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -197,24 +203,36 @@ static int steiner(const std::string& file, int sources, int targets, unsigned s
   return 0;
 }
 
+// Points uniform over a mesh's area (the control points of the benchmark's random polygons, as the
+// wasm benchmark draws them).
+class AreaPoints {
+ public:
+  AreaPoints(const TriMesh& mesh, unsigned seed) : rng_(seed) {
+    std::vector<double> area(mesh.triangles.size());
+    for (size_t f = 0; f < area.size(); ++f) {
+      const auto& t = mesh.triangles[f];
+      area[f] = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+    }
+    face_ = std::discrete_distribution<int>(area.begin(), area.end());
+  }
+  MeshPoint operator()() {
+    double a = u_(rng_), b = u_(rng_);
+    if (a + b > 1) a = 1 - a, b = 1 - b;
+    return MeshPoint{face_(rng_), splinekit::Vec2(a, b)};
+  }
+
+ private:
+  std::mt19937 rng_;
+  std::discrete_distribution<int> face_;
+  std::uniform_real_distribution<double> u_{0, 1};
+};
+
 static int curves(const std::string& file, int polygons, unsigned seed, bool lengths) {
   const TriMesh mesh = testing::build(testing::read_mesh(file));
   const int nf = static_cast<int>(mesh.triangles.size());
   GeodesicSolver solver(mesh);
   CurveTracer tracer(solver);
-  std::vector<double> area(nf);
-  for (int f = 0; f < nf; ++f) {
-    const auto& t = mesh.triangles[f];
-    area[f] = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
-  }
-  std::mt19937 rng(seed);
-  std::discrete_distribution<int> face(area.begin(), area.end());
-  std::uniform_real_distribution<double> u(0, 1);
-  auto point = [&]() {
-    double a = u(rng), b = u(rng);
-    if (a + b > 1) a = 1 - a, b = 1 - b;
-    return MeshPoint{face(rng), splinekit::Vec2(a, b)};
-  };
+  AreaPoints point(mesh, seed);
   TraceOptions options;
   options.scheme = Scheme::kOLR;
   options.levels = 5;
@@ -260,6 +278,129 @@ static int curves(const std::string& file, int polygons, unsigned seed, bool len
   return 0;
 }
 
+// Coarse-to-fine initial strips, an experiment (BENCHMARKS.md, "Surface at scale", What would pay): for the long
+// sides (512 strip faces or more) of random polygons on a generated shape, the side's path on the same shape
+// generated 1/div as fine in each direction, its points mapped to the nearest fine face centroids (a grid) and
+// joined (a greedy walk between centroids, else the kDual search), then straightened on the fine mesh; against
+// shortest_path's default candidates. A decimated proxy of any mesh would stand in for the generated coarse shape.
+static int c2f(const std::string& kind, int polygons, int div) {
+  testing::Arrays fine_arrays, coarse_arrays;
+  if (kind == "coil") {
+    fine_arrays = testing::coil(4000, 48), coarse_arrays = testing::coil(4000 / div, 48 / div);
+  } else if (kind == "knot") {
+    fine_arrays = testing::knot_tube(3000, 24), coarse_arrays = testing::knot_tube(3000 / div, std::max(6, 24 / div));
+  } else if (kind == "folded") {
+    fine_arrays = testing::folded_body(3000, 64), coarse_arrays = testing::folded_body(3000 / div, 64 / div);
+  } else {
+    std::fprintf(stderr, "surface_scale_bench: c2f needs coil, knot or folded\n");
+    return 2;
+  }
+  const TriMesh fine = testing::build(fine_arrays), coarse = testing::build(coarse_arrays);
+  const int nf = static_cast<int>(fine.triangles.size());
+  GeodesicSolver fine_solver(fine), coarse_solver(coarse);
+  // Fine face centroids in a grid of cells three mean edges wide.
+  std::vector<Vec3> centroid(nf);
+  double edge = 0;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = fine.triangles[f];
+    centroid[f] = (fine.positions[t[0]] + fine.positions[t[1]] + fine.positions[t[2]]) / 3;
+    edge += (fine.positions[t[1]] - fine.positions[t[0]]).norm() / nf;
+    lo = lo.cwiseMin(centroid[f]);
+  }
+  const double cell = 3 * edge;
+  auto cell_of = [&](const Vec3& x, int dx, int dy, int dz) {
+    const Vec3 q = (x - lo) / cell;
+    return std::array<int, 3>{int(q.x()) + dx, int(q.y()) + dy, int(q.z()) + dz};
+  };
+  std::map<std::array<int, 3>, std::vector<int>> grid;
+  for (int f = 0; f < nf; ++f) grid[cell_of(centroid[f], 0, 0, 0)].push_back(f);
+  auto nearest = [&](const Vec3& x) {
+    int best = -1;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find(cell_of(x, dx, dy, dz));
+          if (it == grid.end()) continue;
+          for (int f : it->second)
+            if ((centroid[f] - x).squaredNorm() < best_d) best_d = (centroid[f] - x).squaredNorm(), best = f;
+        }
+    return best;
+  };
+  std::vector<int> marks(nf, -1), strip, piece;
+  std::vector<Vec3> along;
+  // Appends the faces from strip.back() (holding `from`) to the face of `to`.
+  auto join = [&](MeshPoint& from, const MeshPoint& to) {
+    int f = strip.back();
+    const size_t mark = strip.size();
+    for (int steps = 0; steps < 32 && f != to.face; ++steps) {  // nearer the target's centroid, face by face
+      int next = -1;
+      double d = (centroid[f] - centroid[to.face]).squaredNorm();
+      for (int g : fine.adjacency[f])
+        if (g >= 0 && (centroid[g] - centroid[to.face]).squaredNorm() < d)
+          d = (centroid[g] - centroid[to.face]).squaredNorm(), next = g;
+      if (next < 0) break;
+      strip.push_back(f = next);
+    }
+    if (f != to.face) {
+      strip.resize(mark);
+      fine_solver.initial_strip(from, to, piece, nullptr, SearchGraph::kDual);
+      strip.insert(strip.end(), piece.begin() + 1, piece.end());
+    }
+    from = to;
+  };
+  AreaPoints point(fine, 3);
+  struct Sum {
+    double ms = 0, length = 0;
+    long flips = 0;
+  } before, coarse_paths, after;
+  double map_ms = 0;
+  int sides = 0, longer = 0, shorter = 0;
+  GeodesicPath path, coarse_path;
+  for (int i = 0; i < polygons; ++i) {
+    const MeshPoint polygon[4] = {point(), point(), point(), point()};
+    for (int s = 0; s < 3; ++s) {
+      const MeshPoint &a = polygon[s], &b = polygon[s + 1];
+      PathStats was, now;
+      double t0 = thread_ms();
+      fine_solver.shortest_path(a, b, path, &was, SearchGraph::kDual);
+      const double ms = thread_ms() - t0;
+      if (was.strip_faces < 512) continue;
+      const double length = path_length(fine, path);
+      ++sides, before.ms += ms, before.length += length, before.flips += was.accepted_flips;
+      const MeshPoint ca = testing::point_at(coarse, eval_position(fine, a)),
+                      cb = testing::point_at(coarse, eval_position(fine, b));
+      t0 = thread_ms();
+      coarse_solver.shortest_path(ca, cb, coarse_path, nullptr, SearchGraph::kDual);
+      coarse_paths.ms += thread_ms() - t0;
+      t0 = thread_ms();
+      path_positions(coarse, coarse_path, along);
+      strip.assign(1, a.face);
+      MeshPoint at = a;
+      for (size_t k = 1; k + 1 < along.size(); ++k)
+        if (const int f = nearest(along[k]); f >= 0 && f != strip.back())
+          join(at, MeshPoint{f, splinekit::Vec2(1.0 / 3, 1.0 / 3)});
+      if (b.face != strip.back()) join(at, b);
+      remove_loops(strip, marks);
+      map_ms += thread_ms() - t0;
+      t0 = thread_ms();
+      fine_solver.straighten(a, b, strip, path, &now);
+      after.ms += thread_ms() - t0;
+      const double c2f_length = path_length(fine, path);
+      after.length += c2f_length, after.flips += now.accepted_flips;
+      longer += c2f_length > length * (1 + 1e-6), shorter += c2f_length < length * (1 - 1e-6);
+    }
+  }
+  std::printf(
+      "{\"shape\":\"%s\",\"fine_triangles\":%d,\"coarse_triangles\":%zu,\"sides\":%d,"
+      "\"default\":{\"ms\":%.1f,\"flips\":%ld,\"length\":%.6f},\"coarse_paths_ms\":%.1f,\"map_ms\":%.1f,"
+      "\"straightened\":{\"ms\":%.1f,\"flips\":%ld,\"length\":%.6f},\"longer\":%d,\"shorter\":%d}\n",
+      kind.c_str(), nf, coarse.triangles.size(), sides, before.ms, before.flips, before.length, coarse_paths.ms, map_ms,
+      after.ms, after.flips, after.length, longer, shorter);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   try {
@@ -270,6 +411,7 @@ int main(int argc, char** argv) {
       return steiner(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5]));
     if (mode == "curves" && argc >= 5)
       return curves(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 && std::string(argv[5]) == "lengths");
+    if (mode == "c2f" && argc >= 5) return c2f(argv[2], std::atoi(argv[3]), std::atoi(argv[4]));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "surface_scale_bench: %s\n", e.what());
     return 1;
@@ -280,6 +422,7 @@ int main(int argc, char** argv) {
                "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
                "       surface_scale_bench search <mesh> <pairs> <seed>\n"
                "       surface_scale_bench steiner <mesh> <sources> <targets> <seed>\n"
-               "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths]\n");
+               "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths]\n"
+               "       surface_scale_bench c2f coil|knot|folded <polygons> <div>\n");
   return 2;
 }
