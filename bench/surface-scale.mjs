@@ -416,12 +416,19 @@ fine mesh, against the default candidates (search, reverse search, descent, stra
 tube, half (36k), 27 sides: 114-128 ms, 36,267 flips -> 42-46 ms, 4,835-4,919 flips, plus 37-40 ms, +0.08% (1
 longer, 3 shorter); folded body, a quarter (24k), 23 sides: 182-193 ms, 35,863 flips -> 54-58 ms, 10,727-11,591
 flips, plus 15 ms, +0.83% (2 longer, 2 shorter: one side went round the other side of a limb); the coil at a
-quarter (12 quads round the tube) no better than the default (41-48 ms, ~17,400 flips). So a proxy about half as
-fine, its own paths found from a proxy coarser again, could take a long side's time to about half; not done here:
-it needs a decimated proxy of any mesh with a correspondence to the fine one (the generated coarse shape and the
-centroid grid, whose mapping took 37-83 ms, stand in for it), and room in the memory budget (a half-size proxy with
-its own search structures is ~58 bytes per fine triangle, against 116 used of ~120: the landmarks' 16 and more would
-have to go).`;
+quarter (12 quads round the tube) no better than the default (41-48 ms, ~17,400 flips). A decimated proxy does as
+well or better (\`c2f <shape> 10 <coarse.obj>\`; the benchmark's OBJ simplified by meshoptimizer 1.3.0, npm, MIT:
+MeshoptSimplifier.simplify(indices, positions, 3, a quarter or a sixteenth of the indices, 0.01), 60-230 ms in
+Node, which keeps a subset of the fine vertices): coil to 96k triangles, 28 sides: 76 ms, 14,033 flips -> 36 ms,
+3,344 flips, plus 37 ms, total length -0.09% (5 sides shorter, 2 longer); knotted tube to 36k, 27 sides: 114-118
+ms, 36,267 flips -> 26-28 ms, 3,065 flips, plus 31-33 ms, -0.37% (9 shorter, none longer); folded body to 24k
+(a sixteenth), 23 sides: 178-181 ms, 35,863 flips -> 55-61 ms, 11,326 flips, plus 15 ms, -1.8% (10 shorter, 1
+longer: the default's strips settle round the wrong side of a limb; to 96k: -1.2%); the coil to 24k: 48 ms, 5,174
+flips, +0.18%. So a proxy, its own paths found from a proxy coarser again, could take a long side's time to a half
+or a third and its length closer to the shortest; not done here: it needs the proxy's correspondence to the fine
+mesh (its vertices are fine vertices; the mapping here, a centroid grid and greedy joins, took 24-83 ms, more than
+the straightening it saves) and room in the memory budget (a quarter-size proxy with its own search structures is
+~29 bytes per fine triangle, against 116 used of ~120: the landmarks' 16 and more would have to go).`;
 
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis

@@ -25,9 +25,10 @@
 //       wasm benchmark traces them: per-curve ms (median, p90, p99, max; this thread's CPU time, so
 //       that other work on the machine does not inflate it) and work counters (median,
 //       p99); with `lengths`, every curve's polyline length too (to compare two builds' curves).
-//   surface_scale_bench c2f coil|knot|folded <polygons> <div>
+//   surface_scale_bench c2f coil|knot|folded <polygons> <div>|<coarse.obj>
 //       an experiment: the long sides of random polygons straightened from a strip that follows the
-//       side's path on the same shape generated 1/div as fine, against the default candidates.
+//       side's path on the same shape generated 1/div as fine (or on a given coarse mesh, such as a
+//       decimation of the benchmark's), against the default candidates.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -282,8 +283,11 @@ static int curves(const std::string& file, int polygons, unsigned seed, bool len
 // sides (512 strip faces or more) of random polygons on a generated shape, the side's path on the same shape
 // generated 1/div as fine in each direction, its points mapped to the nearest fine face centroids (a grid) and
 // joined (a greedy walk between centroids, else the kDual search), then straightened on the fine mesh; against
-// shortest_path's default candidates. A decimated proxy of any mesh would stand in for the generated coarse shape.
-static int c2f(const std::string& kind, int polygons, int div) {
+// shortest_path's default candidates. A decimated proxy of any mesh would stand in for the generated coarse shape
+// (or comes as <coarse.obj>).
+static int c2f(const std::string& kind, int polygons, const std::string& coarser) {
+  const bool from_file = coarser.size() > 4 && coarser.substr(coarser.size() - 4) == ".obj";
+  const int div = from_file ? 1 : std::max(1, std::atoi(coarser.c_str()));
   testing::Arrays fine_arrays, coarse_arrays;
   if (kind == "coil") {
     fine_arrays = testing::coil(4000, 48), coarse_arrays = testing::coil(4000 / div, 48 / div);
@@ -295,7 +299,8 @@ static int c2f(const std::string& kind, int polygons, int div) {
     std::fprintf(stderr, "surface_scale_bench: c2f needs coil, knot or folded\n");
     return 2;
   }
-  const TriMesh fine = testing::build(fine_arrays), coarse = testing::build(coarse_arrays);
+  const TriMesh fine = testing::build(fine_arrays),
+                coarse = testing::build(from_file ? testing::read_mesh(coarser) : coarse_arrays);
   const int nf = static_cast<int>(fine.triangles.size());
   GeodesicSolver fine_solver(fine), coarse_solver(coarse);
   // Fine face centroids in a grid of cells three mean edges wide.
@@ -411,7 +416,7 @@ int main(int argc, char** argv) {
       return steiner(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5]));
     if (mode == "curves" && argc >= 5)
       return curves(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 && std::string(argv[5]) == "lengths");
-    if (mode == "c2f" && argc >= 5) return c2f(argv[2], std::atoi(argv[3]), std::atoi(argv[4]));
+    if (mode == "c2f" && argc >= 5) return c2f(argv[2], std::atoi(argv[3]), argv[4]);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "surface_scale_bench: %s\n", e.what());
     return 1;
@@ -423,6 +428,6 @@ int main(int argc, char** argv) {
                "       surface_scale_bench search <mesh> <pairs> <seed>\n"
                "       surface_scale_bench steiner <mesh> <sources> <targets> <seed>\n"
                "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths]\n"
-               "       surface_scale_bench c2f coil|knot|folded <polygons> <div>\n");
+               "       surface_scale_bench c2f coil|knot|folded <polygons> <div>|<coarse.obj>\n");
   return 2;
 }
