@@ -20,11 +20,13 @@
 //       edge (ShortestPathOptions::steiner) against the exact distance (MMP): the share within 0.5%,
 //       the worst ratio and the total time per count, as {"steiner":[...]} (BENCHMARKS.md, "Why
 //       these defaults", was measured with it at 10 x 50).
-//   surface_scale_bench curves <mesh> <polygons> <seed> [lengths]
+//   surface_scale_bench curves <mesh> <polygons> <seed> [lengths] [<guide.obj>]
 //       random whole-surface curves (4 control points uniform over the area), OLR 5 levels, as the
 //       wasm benchmark traces them: per-curve ms (median, p90, p99, max; this thread's CPU time, so
 //       that other work on the machine does not inflate it) and work counters (median,
-//       p99); with `lengths`, every curve's polyline length too (to compare two builds' curves).
+//       p99); with `lengths`, every curve's polyline length too (to compare two builds' curves);
+//       with <guide.obj> (faces over the mesh's vertices: a decimation such as SurfaceMesh's, written
+//       with all of the mesh's vertices), the solver's coarse guide (GeodesicSolver::set_coarse_guide).
 //   surface_scale_bench c2f coil|knot|folded <polygons> <div>|<coarse.obj>
 //       an experiment: the long sides of random polygons straightened from a strip that follows the
 //       side's path on the same shape generated 1/div as fine (or on a given coarse mesh, such as a
@@ -228,10 +230,17 @@ class AreaPoints {
   std::uniform_real_distribution<double> u_{0, 1};
 };
 
-static int curves(const std::string& file, int polygons, unsigned seed, bool lengths) {
+static int curves(const std::string& file, int polygons, unsigned seed, bool lengths, const std::string& guide) {
   const TriMesh mesh = testing::build(testing::read_mesh(file));
   const int nf = static_cast<int>(mesh.triangles.size());
   GeodesicSolver solver(mesh);
+  if (!guide.empty()) {
+    const Arrays coarse = testing::read_mesh(guide);
+    std::string error;
+    if (solver.set_coarse_guide(coarse.triangles.data(), coarse.faces(), error) != MeshStatus::kOk)
+      throw std::runtime_error(error);
+  }
+  int guided = 0;
   CurveTracer tracer(solver);
   AreaPoints point(mesh, seed);
   TraceOptions options;
@@ -247,6 +256,7 @@ static int curves(const std::string& file, int polygons, unsigned seed, bool len
     tracer.trace(polygon, options, polyline);
     ms.push_back(thread_ms() - t0);
     const TraceStats& s = tracer.stats;
+    guided += s.paths.guided;
     counters.push_back({double(s.shortest_paths), double(s.seeded_paths), double(s.paths.visited_nodes),
                         double(s.paths.strip_faces), double(s.paths.passes), double(s.paths.accepted_flips)});
     double len = 0;
@@ -264,6 +274,10 @@ static int curves(const std::string& file, int polygons, unsigned seed, bool len
       "{\"triangles\":%d,\"curves\":%d,\"total_ms\":%.1f,\"median_ms\":%.3f,\"p90_ms\":%.3f,\"p99_ms\":%.3f,\"max_ms\":"
       "%.3f",
       nf, polygons, total, quantile(ms, 0.5), quantile(ms, 0.9), quantile(ms, 0.99), quantile(ms, 1));
+  if (!guide.empty())
+    std::printf(",\"guide_triangles\":%zu,\"guide_bytes_per_triangle\":%.1f,\"guided\":%d",
+                solver.coarse_guide()->coarse().triangles.size(), double(solver.coarse_guide()->bytes()) / nf, guided);
+  std::printf(",\"bytes_per_triangle\":%.1f", double(mesh_bytes(mesh) + solver.bytes()) / nf);
   const char* names[] = {"searched", "seeded", "nodes", "strip_faces", "passes", "flips"};
   for (int k = 0; k < 6; ++k) {
     std::vector<double> c;
@@ -280,15 +294,14 @@ static int curves(const std::string& file, int polygons, unsigned seed, bool len
 }
 
 // Coarse-to-fine initial strips, an experiment (BENCHMARKS.md, "Surface at scale", What would pay): for the long
-// sides (512 strip faces or more) of random polygons on a generated shape, the side's path on the same shape
-// generated 1/div as fine in each direction, its points mapped to the nearest fine face centroids (a grid) and
-// joined (a greedy walk between centroids, else the kDual search), then straightened on the fine mesh; against
-// shortest_path's default candidates. A decimated proxy of any mesh would stand in for the generated coarse shape
-// (or comes as <coarse.obj>).
+// sides (512 strip faces or more) of random polygons on a generated shape, the side's path on a coarser mesh of the
+// same shape (generated 1/div as fine, or <coarse.obj>, e.g. a decimation), followed on the fine mesh face by face
+// down the distance of the face centroids to each of its points in turn (then the kDual search to the end point
+// if the descent stops elsewhere), and straightened there; against shortest_path's default candidates.
 static int c2f(const std::string& kind, int polygons, const std::string& coarser) {
   const bool from_file = coarser.size() > 4 && coarser.substr(coarser.size() - 4) == ".obj";
   const int div = from_file ? 1 : std::max(1, std::atoi(coarser.c_str()));
-  testing::Arrays fine_arrays, coarse_arrays;
+  Arrays fine_arrays, coarse_arrays;
   if (kind == "coil") {
     fine_arrays = testing::coil(4000, 48), coarse_arrays = testing::coil(4000 / div, 48 / div);
   } else if (kind == "knot") {
@@ -303,65 +316,31 @@ static int c2f(const std::string& kind, int polygons, const std::string& coarser
                 coarse = testing::build(from_file ? testing::read_mesh(coarser) : coarse_arrays);
   const int nf = static_cast<int>(fine.triangles.size());
   GeodesicSolver fine_solver(fine), coarse_solver(coarse);
-  // Fine face centroids in a grid of cells three mean edges wide.
   std::vector<Vec3> centroid(nf);
-  double edge = 0;
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
   for (int f = 0; f < nf; ++f) {
     const auto& t = fine.triangles[f];
     centroid[f] = (fine.positions[t[0]] + fine.positions[t[1]] + fine.positions[t[2]]) / 3;
-    edge += (fine.positions[t[1]] - fine.positions[t[0]]).norm() / nf;
-    lo = lo.cwiseMin(centroid[f]);
   }
-  const double cell = 3 * edge;
-  auto cell_of = [&](const Vec3& x, int dx, int dy, int dz) {
-    const Vec3 q = (x - lo) / cell;
-    return std::array<int, 3>{int(q.x()) + dx, int(q.y()) + dy, int(q.z()) + dz};
-  };
-  std::map<std::array<int, 3>, std::vector<int>> grid;
-  for (int f = 0; f < nf; ++f) grid[cell_of(centroid[f], 0, 0, 0)].push_back(f);
-  auto nearest = [&](const Vec3& x) {
-    int best = -1;
-    double best_d = std::numeric_limits<double>::infinity();
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = grid.find(cell_of(x, dx, dy, dz));
-          if (it == grid.end()) continue;
-          for (int f : it->second)
-            if ((centroid[f] - x).squaredNorm() < best_d) best_d = (centroid[f] - x).squaredNorm(), best = f;
-        }
-    return best;
-  };
-  std::vector<int> marks(nf, -1), strip, piece;
+  std::vector<int> marks(nf, -1), strip, tail;
   std::vector<Vec3> along;
-  // Appends the faces from strip.back() (holding `from`) to the face of `to`.
-  auto join = [&](MeshPoint& from, const MeshPoint& to) {
-    int f = strip.back();
-    const size_t mark = strip.size();
-    for (int steps = 0; steps < 32 && f != to.face; ++steps) {  // nearer the target's centroid, face by face
+  // From strip.back() to the neighbour whose centroid is nearest x while one is nearer.
+  auto descend_to = [&](const Vec3& x) {
+    for (int f = strip.back();;) {
       int next = -1;
-      double d = (centroid[f] - centroid[to.face]).squaredNorm();
+      double d = (centroid[f] - x).squaredNorm();
       for (int g : fine.adjacency[f])
-        if (g >= 0 && (centroid[g] - centroid[to.face]).squaredNorm() < d)
-          d = (centroid[g] - centroid[to.face]).squaredNorm(), next = g;
-      if (next < 0) break;
+        if (g >= 0 && (centroid[g] - x).squaredNorm() < d) d = (centroid[g] - x).squaredNorm(), next = g;
+      if (next < 0) return;
       strip.push_back(f = next);
     }
-    if (f != to.face) {
-      strip.resize(mark);
-      fine_solver.initial_strip(from, to, piece, nullptr, SearchGraph::kDual);
-      strip.insert(strip.end(), piece.begin() + 1, piece.end());
-    }
-    from = to;
   };
   AreaPoints point(fine, 3);
   struct Sum {
     double ms = 0, length = 0;
     long flips = 0;
-  } before, coarse_paths, after;
-  double map_ms = 0;
-  int sides = 0, longer = 0, shorter = 0;
+  } before, after;
+  double coarse_ms = 0, map_ms = 0;
+  int sides = 0, longer = 0, shorter = 0, searched_to_end = 0;
   GeodesicPath path, coarse_path;
   for (int i = 0; i < polygons; ++i) {
     const MeshPoint polygon[4] = {point(), point(), point(), point()};
@@ -378,15 +357,18 @@ static int c2f(const std::string& kind, int polygons, const std::string& coarser
                       cb = testing::point_at(coarse, eval_position(fine, b));
       t0 = thread_ms();
       coarse_solver.shortest_path(ca, cb, coarse_path, nullptr, SearchGraph::kDual);
-      coarse_paths.ms += thread_ms() - t0;
+      coarse_ms += thread_ms() - t0;
       t0 = thread_ms();
       path_positions(coarse, coarse_path, along);
       strip.assign(1, a.face);
-      MeshPoint at = a;
-      for (size_t k = 1; k + 1 < along.size(); ++k)
-        if (const int f = nearest(along[k]); f >= 0 && f != strip.back())
-          join(at, MeshPoint{f, splinekit::Vec2(1.0 / 3, 1.0 / 3)});
-      if (b.face != strip.back()) join(at, b);
+      for (size_t k = 1; k + 1 < along.size(); ++k) descend_to(along[k]);
+      descend_to(eval_position(fine, b));
+      if (strip.back() != b.face) {
+        fine_solver.initial_strip(MeshPoint{strip.back(), splinekit::Vec2(1.0 / 3, 1.0 / 3)}, b, tail, nullptr,
+                                  SearchGraph::kDual);
+        strip.insert(strip.end(), tail.begin() + 1, tail.end());
+        ++searched_to_end;
+      }
       remove_loops(strip, marks);
       map_ms += thread_ms() - t0;
       t0 = thread_ms();
@@ -400,9 +382,10 @@ static int c2f(const std::string& kind, int polygons, const std::string& coarser
   std::printf(
       "{\"shape\":\"%s\",\"fine_triangles\":%d,\"coarse_triangles\":%zu,\"sides\":%d,"
       "\"default\":{\"ms\":%.1f,\"flips\":%ld,\"length\":%.6f},\"coarse_paths_ms\":%.1f,\"map_ms\":%.1f,"
-      "\"straightened\":{\"ms\":%.1f,\"flips\":%ld,\"length\":%.6f},\"longer\":%d,\"shorter\":%d}\n",
-      kind.c_str(), nf, coarse.triangles.size(), sides, before.ms, before.flips, before.length, coarse_paths.ms, map_ms,
-      after.ms, after.flips, after.length, longer, shorter);
+      "\"searched_to_end\":%d,\"straightened\":{\"ms\":%.1f,\"flips\":%ld,\"length\":%.6f},\"longer\":%d,"
+      "\"shorter\":%d}\n",
+      kind.c_str(), nf, coarse.triangles.size(), sides, before.ms, before.flips, before.length, coarse_ms, map_ms,
+      searched_to_end, after.ms, after.flips, after.length, longer, shorter);
   return 0;
 }
 
@@ -414,8 +397,12 @@ int main(int argc, char** argv) {
     if (mode == "search" && argc >= 5) return search(argv[2], std::atoi(argv[3]), std::atoi(argv[4]));
     if (mode == "steiner" && argc >= 6)
       return steiner(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5]));
-    if (mode == "curves" && argc >= 5)
-      return curves(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), argc > 5 && std::string(argv[5]) == "lengths");
+    if (mode == "curves" && argc >= 5) {
+      std::string guide;  // [lengths] [<guide.obj>: a decimation over the mesh's vertices]
+      bool lengths = false;
+      for (int i = 5; i < argc; ++i) std::string(argv[i]) == "lengths" ? void(lengths = true) : void(guide = argv[i]);
+      return curves(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), lengths, guide);
+    }
     if (mode == "c2f" && argc >= 5) return c2f(argv[2], std::atoi(argv[3]), argv[4]);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "surface_scale_bench: %s\n", e.what());
@@ -427,7 +414,7 @@ int main(int argc, char** argv) {
                "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
                "       surface_scale_bench search <mesh> <pairs> <seed>\n"
                "       surface_scale_bench steiner <mesh> <sources> <targets> <seed>\n"
-               "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths]\n"
+               "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths] [<guide.obj>]\n"
                "       surface_scale_bench c2f coil|knot|folded <polygons> <div>|<coarse.obj>\n");
   return 2;
 }

@@ -9,6 +9,21 @@ namespace splinekit::surface {
 GeodesicSolver::GeodesicSolver(const TriMesh& mesh, const ShortestPathOptions& options)
     : mesh_(mesh), search_(mesh, options), straightener_(mesh, search_.face_marks(), options) {}
 
+GeodesicSolver::~GeodesicSolver() = default;
+
+MeshStatus GeodesicSolver::set_coarse_guide(const int* triangles, int count, std::string& error) {
+  std::unique_ptr<CoarseGuide> guide;
+  if (CoarseGuide::build(mesh_, triangles, count, straightener_.options, guide, error) != MeshStatus::kOk)
+    return MeshStatus::kInvalidInput;
+  const TriMesh& coarse = guide->coarse();
+  double edges = 0;
+  for (const auto& t : coarse.triangles)
+    for (int k = 0; k < 3; ++k) edges += (coarse.positions[t[(k + 1) % 3]] - coarse.positions[t[k]]).norm();
+  guide_min_length_ = straightener_.options.coarse_guide_faces * edges / (3.0 * coarse.triangles.size());
+  guide_ = std::move(guide);
+  return MeshStatus::kOk;
+}
+
 bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, GeodesicPath& path, PathStats* stats,
                                    SearchGraph graph) {
   // From the end that comes first (by face, then barycentrics), reversed if need be: where locally
@@ -21,6 +36,10 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     const bool reached = shortest_path(b, a, path, stats, graph);
     path = reversed(mesh_, path);
     return reached;
+  }
+  if (graph == SearchGraph::kDual && guided_strip(a, b, stats)) {
+    straightener_.straighten(a, b, strip_, path, stats);
+    return true;
   }
   if (!initial_strip(a, b, strip_, stats, graph)) {
     path = GeodesicPath{a, b, {}, {}, {}};
@@ -47,6 +66,19 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     }
   }
   straightener_.straighten(a, b, strip_, path, stats);
+  return true;
+}
+
+bool GeodesicSolver::guided_strip(const MeshPoint& a, const MeshPoint& b, PathStats* stats) {
+  const int faces = straightener_.options.coarse_guide_faces;
+  if (!guide_ || faces <= 0) return false;
+  // Ends whose distance is bounded below by fewer guide edges than that: a short path, which the
+  // greedy search finds at once (the guide's would cost its search and the walks to kept vertices).
+  const double apart = std::max((eval_position(mesh_, a) - eval_position(mesh_, b)).norm(),
+                                search_.landmarks().bound_between(a.face, b.face));
+  if (apart < guide_min_length_ || !guide_->strip(a, b, faces, search_, strip_, stats)) return false;
+  search_length_ = std::numeric_limits<double>::quiet_NaN();
+  if (stats) ++stats->guided;
   return true;
 }
 

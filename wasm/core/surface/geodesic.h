@@ -1,6 +1,8 @@
 // Locally shortest geodesic paths between mesh points (b/Surf §5.1 "Point-to-point shortest path",
 // §6.2 for the refined graph). Three phases, each in its own unit:
-//   (i)   an initial strip of faces from a search on the (refined) dual graph (dual_search.h);
+//   (i)   an initial strip of faces from a search on the (refined) dual graph (dual_search.h), or for
+//         a long kDual path on a mesh with a coarse guide, the strip that follows the path found on
+//         the guide (coarse_guide.h);
 //   (ii)  the strip is unfolded into the plane (unfold.h) and the funnel algorithm finds the
 //         shortest path inside it (funnel.h);
 //   (iii) the strip is straightened by flips at the path's reflex vertices until it is locally
@@ -9,12 +11,15 @@
 // (path.h, with the queries on paths). This header is the entry: it includes the others.
 #pragma once
 
+#include "surface/coarse_guide.h"
 #include "surface/dual_search.h"
 #include "surface/geodesic_options.h"
 #include "surface/mesh.h"
 #include "surface/path.h"
 #include "surface/straighten.h"
 
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace splinekit::surface {
@@ -29,13 +34,23 @@ class GeodesicSolver {
   // (the straightening borrows the search's per-face table: not copyable)
   GeodesicSolver(const GeodesicSolver&) = delete;
   GeodesicSolver& operator=(const GeodesicSolver&) = delete;
+  ~GeodesicSolver();
 
   // ---- Queries ----
   const TriMesh& mesh() const { return mesh_; }
   const DualGraph& graph() const { return search_.graph(); }
   const Landmarks& landmarks() const { return search_.landmarks(); }
-  // Bytes held for the mesh: the graph, the search records, the face centroids, the vertex angle sums.
-  size_t bytes() const { return search_.bytes() + straightener_.bytes(); }
+  // Bytes held for the mesh: the graph, the search records, the face centroids, the vertex angle sums,
+  // the coarse guide.
+  size_t bytes() const { return search_.bytes() + straightener_.bytes() + (guide_ ? guide_->bytes() : 0); }
+  // The coarse guide (null without one).
+  const CoarseGuide* coarse_guide() const { return guide_.get(); }
+
+  // ---- Set-up ----
+  // Long kDual paths follow their way on a decimation of the mesh (coarse_guide.h): `count` faces of
+  // 3 FILE vertex indices each, all vertices of the mesh (e.g. meshoptimizer's simplification).
+  // kInvalidInput with `error` naming the problem, the solver's guide unchanged.
+  MeshStatus set_coarse_guide(const int* triangles, int count, std::string& error);
 
   // ---- Paths ----
   // The locally shortest path from a to b (mesh space). Always succeeds on a connected mesh; when b
@@ -74,11 +89,16 @@ class GeodesicSolver {
   // descent ends too far from the other end (landmark_descent_gap) or the search on finds no way.
   bool descent_strip(const MeshPoint& a, const MeshPoint& b, double shortest, std::vector<int>& strip,
                      PathStats* stats);
+  // The coarse guide's strip from a to b in strip_ (its ends at least guide_min_length_ apart by the
+  // bounds, its coarse path at least coarse_guide_faces faces); false without a guide or when not so.
+  bool guided_strip(const MeshPoint& a, const MeshPoint& b, PathStats* stats);
   // The length of the funnel path from a to b inside `strip` (phase (ii) alone).
   double funnel_length(const MeshPoint& a, const MeshPoint& b, const std::vector<int>& strip);
 
   const TriMesh& mesh_;
   DualSearch search_;
+  std::unique_ptr<CoarseGuide> guide_;
+  double guide_min_length_ = 0;  // coarse_guide_faces of the guide's mean edge lengths
   Straightener straightener_;
   std::vector<int> strip_;    // the strip between the phases
   std::vector<int> back_;     // a long kDual strip's other candidate (searched from b to a, or the descent's)

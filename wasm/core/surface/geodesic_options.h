@@ -51,6 +51,13 @@ struct ShortestPathOptions {
   // from the other end: there the landmark's way passes elsewhere (on the folded body, along another
   // limb; 2026-12-04: without it, its curves took 1.1-1.2 times as long, none shorter).
   double landmark_descent_gap = 0.05;
+  // A kDual path whose ends lie at least this many of a coarse guide's mean edge lengths apart (in space
+  // or by the landmarks' bound) and whose path on the guide crosses at least as many of its faces gets
+  // its strip from that path (coarse_guide.h; 0: never): on the coil, the knotted tube and the folded
+  // body the long sides' strips then lie near the geodesic, where the greedy search's keep to one side
+  // of the tube or limb and the straightening sweeps the band between (BENCHMARKS.md, "Surface at
+  // scale", Coarse guide). Only with a guide (GeodesicSolver::set_coarse_guide).
+  int coarse_guide_faces = 24;
   // Landmark lower bounds (landmarks.h) in components of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
   // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
@@ -89,12 +96,13 @@ struct PathStats {
   int walked_faces = 0;     // phase (iii): faces the chords' walks entered (kept or not)
   int pass_faces = 0;       // phase (iii): faces of the strips the passes worked on (a window's its own)
   int windows = 0;          // phase (iii): windows straightened on their own
+  int guided = 0;           // phase (i): strips followed from a coarse guide's path
 
   PathStats& operator+=(const PathStats& o) {
     searches += o.searches, visited_nodes += o.visited_nodes, strip_faces += o.strip_faces, passes += o.passes;
     accepted_flips += o.accepted_flips, frozen_vertices += o.frozen_vertices;
     chords_tried += o.chords_tried, chords_kept += o.chords_kept, walked_faces += o.walked_faces;
-    pass_faces += o.pass_faces, windows += o.windows;
+    pass_faces += o.pass_faces, windows += o.windows, guided += o.guided;
     return *this;
   }
 };
