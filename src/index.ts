@@ -68,6 +68,7 @@ export {
 } from './skin3d/rig.js';
 export {
   DEFAULT_LANDMARKS,
+  GUIDED_LANDMARKS,
   SurfaceMesh,
   type GeodesicPath,
   type MeshBuildTimes,
@@ -76,6 +77,7 @@ export {
   type MeshPoint,
   type MeshPointLike,
 } from './surface/mesh.js';
+export { GUIDE_MIN_FACES, GUIDE_RATIO } from './surface/coarse-guide.js';
 export { meshPointNormal, meshPointPosition, vertexNormals } from './surface/mesh-point.js';
 export {
   parseMesh,

@@ -1,5 +1,6 @@
 import createSplinekitCore, { type SplinekitCoreModule } from './splinekit-core.mjs';
 import { SplinekitError } from './errors.js';
+import { loadSimplifier } from '../surface/coarse-guide.js';
 
 let instance: SplinekitCoreModule | undefined;
 let loading: Promise<SplinekitCoreModule> | undefined;
@@ -10,8 +11,9 @@ let loading: Promise<SplinekitCoreModule> | undefined;
  * inlined in the module, so no file has to be located or fetched.
  */
 export function init(): Promise<SplinekitCoreModule> {
-  loading ??= createSplinekitCore().then(
-    (m) => (instance = m),
+  // (with the mesh simplifier's, which SurfaceMesh calls synchronously for its coarse guide)
+  loading ??= Promise.all([createSplinekitCore(), loadSimplifier()]).then(
+    ([m]) => (instance = m),
     (err: unknown) => {
       loading = undefined;
       throw new SplinekitError('internal', `could not load the splinekit WebAssembly core: ${String(err)}`, { cause: err });

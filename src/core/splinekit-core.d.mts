@@ -137,6 +137,12 @@ export interface SurfaceMeshHandle extends EmbindObject {
   build(landmarks: number, deferSearch: boolean): number;
   buildSearch(): void;
   searchBuilt(): boolean;
+  /** The coarse guide of long paths: resizeGuide(F), guideIn() gets 3 file vertex indices per face, buildGuide() (status; builds the solver first). */
+  resizeGuide(faces: number): void;
+  guideIn(): Int32Array;
+  buildGuide(): number;
+  /** Faces of the coarse guide's mesh (0 without one). */
+  guideFaces(): number;
   /** The mesh report, {name: count} under the names of wasm/core/surface/mesh.h report_fields. */
   reportFields(): Record<string, number>;
   bytes(): number;
@@ -145,7 +151,7 @@ export interface SurfaceMeshHandle extends EmbindObject {
   landmarkCount(): number;
   /** The file faces that repeat an earlier face (the core takes that face for them), ascending; a view valid until the next call. */
   duplicateFaces(): Int32Array;
-  /** Milliseconds of the last build(): part 0 the mesh, 1 its solver (search graph, landmarks). */
+  /** Milliseconds of the last build(): part 0 the mesh, 1 its solver (search graph, landmarks), 2 the coarse guide. */
   buildMilliseconds(part: number): number;
   resizePoints(n: number): void;
   pointsIn(): Float64Array;

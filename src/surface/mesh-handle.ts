@@ -11,9 +11,22 @@ import type { MeshPoint } from './mesh-point.js';
 /** SurfaceMesh → its SurfaceMeshHandle; `get` throws SplinekitError('invalid-input') for a disposed mesh. */
 export const meshHandles = new HandleLinks<SurfaceMeshHandle>(() => new SplinekitError('invalid-input', 'the mesh has been disposed'));
 
+/**
+ * What a mesh whose search structures were deferred (SurfaceMeshOptions.deferSearch) still has to
+ * build before its first query that needs them (SurfaceMesh registers it; it removes itself once run).
+ */
+export const pendingSearch = new WeakMap<object, () => void>();
+
+/** The handle of `mesh`, with its search structures built (see pendingSearch). */
+export function searchHandle(mesh: object): SurfaceMeshHandle {
+  const handle = meshHandles.get(mesh);
+  pendingSearch.get(mesh)?.();
+  return handle;
+}
+
 /** Writes mesh points (file space) into the handle's input buffer of `mesh`, and returns the handle. */
 export function writeMeshPoints(mesh: object, points: readonly MeshPoint[]): SurfaceMeshHandle {
-  const handle = meshHandles.get(mesh);
+  const handle = searchHandle(mesh);
   handle.resizePoints(points.length);
   const buf = handle.pointsIn();
   points.forEach((p, i) => {

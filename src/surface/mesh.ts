@@ -9,7 +9,8 @@ import { core } from '../core/module.js';
 import { SplinekitError, checkStatus } from '../core/errors.js';
 import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
 import { parseMesh, type MeshParseOptions } from './mesh-io.js';
-import { meshHandles, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
+import { GUIDE_MIN_FACES, guideTriangles } from './coarse-guide.js';
+import { meshHandles, pendingSearch, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
 import { meshPointPosition, type MeshPoint, type MeshPointLike } from './mesh-point.js';
 
 export type { MeshPoint, MeshPointLike } from './mesh-point.js';
@@ -47,6 +48,8 @@ export interface MeshInfo {
   bytes: number;
   /** Landmarks of the shortest-path search (see SurfaceMeshOptions.landmarks; 0 when no connected part has 16,384 faces). */
   landmarks: number;
+  /** Faces of the coarse guide of long paths (see SurfaceMeshOptions.guide; 0 without one). */
+  guideFaces: number;
   /** Milliseconds the core spent building the mesh and its search structures. */
   buildMs: MeshBuildTimes;
   /** One line per repair or oddity, e.g. "welded 57,653 vertices that share a position". */
@@ -59,6 +62,8 @@ export interface MeshBuildTimes {
   mesh: number;
   /** The shortest-path search's graph and landmarks. */
   search: number;
+  /** The coarse guide: the simplification and the guide's own search structures. */
+  guide: number;
 }
 
 /** Options of SurfaceMesh.fromArrays and SurfaceMesh.load. */
@@ -68,9 +73,18 @@ export interface SurfaceMeshOptions {
    * along the surface, so that searches on coiled or folded shapes follow the path instead of
    * flooding the mesh; placed in the connected parts of 16,384 faces or more (the largest first; a
    * scan's specks of debris get none). Default 8; 0 saves the memory and the precompute (about one
-   * dual-graph Dijkstra search per landmark).
+   * dual-graph Dijkstra search per landmark). Default 8, or GUIDED_LANDMARKS on a mesh with a coarse guide.
    */
   landmarks?: number;
+  /**
+   * A coarse guide of long paths: the mesh simplified to about a sixteenth of its faces (meshoptimizer),
+   * with its own search structures; a shortest path between far points is found on it first and
+   * followed on the mesh, so that on coiled, folded or limbed shapes tracing takes time that follows
+   * the path rather than the mesh (about 11 bytes per face, and ~0.7 µs per face to build, with the
+   * search structures). Default: on meshes of GUIDE_MIN_FACES (65,536) faces or more. Not built when
+   * the simplifier cannot reach a quarter of the faces within 1% of the mesh's extent.
+   */
+  guide?: boolean;
   /**
    * Leave the shortest-path search structures (search graph, landmarks) to `buildSearch()` or the
    * first call that needs them, so that a viewer can show the mesh sooner (on a 2M-triangle mesh
@@ -82,6 +96,14 @@ export interface SurfaceMeshOptions {
 
 /** Landmarks of a SurfaceMesh when SurfaceMeshOptions.landmarks is not given. */
 export const DEFAULT_LANDMARKS = 8;
+
+/**
+ * Landmarks of a SurfaceMesh with a coarse guide when SurfaceMeshOptions.landmarks is not given: the
+ * guide finds the long paths, for which the other four paid (2026-12-05, native, the benchmark's
+ * coil, knotted tube and folded body with their guides: 30 random curves each took 0.95-1.01 times as
+ * long with 4 as with 8, 8 bytes per face less).
+ */
+export const GUIDED_LANDMARKS = 4;
 
 /** A geodesic path on the mesh: its start, every edge crossing, its end. */
 export interface GeodesicPath {
@@ -174,7 +196,8 @@ export class SurfaceMesh {
       components: r.components,
       bytes: handle.bytes(),
       landmarks: handle.landmarkCount(),
-      buildMs: { mesh: handle.buildMilliseconds(0), search: handle.buildMilliseconds(1) },
+      guideFaces: 0,
+      buildMs: { mesh: handle.buildMilliseconds(0), search: handle.buildMilliseconds(1), guide: 0 },
       warnings: [],
     };
     const w = info.warnings;
@@ -202,10 +225,11 @@ export class SurfaceMesh {
     return meshHandles.get(this).searchBuilt();
   }
 
-  /** Builds the search structures now if SurfaceMeshOptions.deferSearch left them; returns info. */
+  /** Builds the search structures (and the coarse guide) now if SurfaceMeshOptions.deferSearch left them; returns info. */
   buildSearch(): MeshInfo {
     const handle = meshHandles.get(this);
     handle.buildSearch();
+    pendingSearch.get(this)?.();
     this.readSearch(handle);
     return this._info;
   }
@@ -213,12 +237,30 @@ export class SurfaceMesh {
   private readSearch(handle: SurfaceMeshHandle): void {
     this._info.bytes = handle.bytes();
     this._info.landmarks = handle.landmarkCount();
+    this._info.guideFaces = handle.guideFaces();
     this._info.buildMs.search = handle.buildMilliseconds(1);
+  }
+
+  /** Simplifies the mesh and gives the core its coarse guide (SurfaceMeshOptions.guide), after the search structures. */
+  private buildGuide(): void {
+    const handle = meshHandles.get(this);
+    const start = performance.now();
+    const kept = guideTriangles(this.positions, this.triangles);
+    if (kept) {
+      handle.resizeGuide(kept.length / 3);
+      handle.guideIn().set(kept);
+      checkStatus(handle.buildGuide(), 'coarse guide', () => handle.error());
+    } else {
+      handle.buildSearch();
+    }
+    this.readSearch(handle);
+    this._info.buildMs.guide = performance.now() - start;
   }
 
   /** A mesh from flat arrays (3 numbers per vertex, 3 vertex indices per triangle). */
   static fromArrays(positions: ArrayLike<number>, triangles: ArrayLike<number>, options: SurfaceMeshOptions = {}): SurfaceMesh {
-    const landmarks = options.landmarks ?? DEFAULT_LANDMARKS;
+    const guide = options.guide ?? triangles.length / 3 >= GUIDE_MIN_FACES;
+    const landmarks = options.landmarks ?? (guide ? GUIDED_LANDMARKS : DEFAULT_LANDMARKS);
     if (!Number.isInteger(landmarks) || landmarks < 0 || landmarks > 64) throw new SplinekitError('invalid-input', `landmarks must be an integer from 0 to 64 (got ${landmarks})`);
     if (positions.length % 3 !== 0) throw new SplinekitError('invalid-input', `positions: ${positions.length} numbers is not a multiple of 3`);
     if (triangles.length % 3 !== 0) throw new SplinekitError('invalid-input', `triangles: ${triangles.length} indices is not a multiple of 3`);
@@ -238,7 +280,21 @@ export class SurfaceMesh {
       handle.delete();
       throw err;
     }
-    return new SurfaceMesh(handle, Float64Array.from(positions), Int32Array.from(triangles));
+    const mesh = new SurfaceMesh(handle, Float64Array.from(positions), Int32Array.from(triangles));
+    if (guide && options.deferSearch === true) {
+      pendingSearch.set(mesh, () => {
+        pendingSearch.delete(mesh);
+        mesh.buildGuide();
+      });
+    } else if (guide) {
+      try {
+        mesh.buildGuide();
+      } catch (err) {
+        mesh.dispose();
+        throw err;
+      }
+    }
+    return mesh;
   }
 
   /** Parses a mesh file (OBJ, OFF, PLY, STL, glTF, GLB) and builds it. */

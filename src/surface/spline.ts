@@ -6,7 +6,7 @@
 import { SplinekitError, checkStatus } from '../core/errors.js';
 import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
 import type { SurfaceMesh } from './mesh.js';
-import { meshHandles, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
+import { readMeshPoints, searchHandle, writeMeshPoints } from './mesh-handle.js';
 import type { MeshPoint, MeshPointLike } from './mesh-point.js';
 import { traceArgs, type TraceOptions } from './trace-options.js';
 
@@ -40,6 +40,8 @@ export interface TraceCounters {
   passFaces: number;
   /** Windows of a long path straightened on their own (short stretches where its last bends move). */
   windows: number;
+  /** Shortest paths whose strips followed the coarse guide's path (SurfaceMeshOptions.guide). */
+  guided: number;
 }
 
 /** A curve traced on the mesh, as mesh points and as 3D positions. */
@@ -116,7 +118,7 @@ export class SurfaceSpline {
 
   /** The mesh's wasm handle (throws once the mesh is disposed). */
   private get core(): SurfaceMeshHandle {
-    return meshHandles.get(this.mesh);
+    return searchHandle(this.mesh);
   }
 
   /** A spline through the anchors with straight handles: each segment's handles at 1/3 and 2/3 of its geodesic. */

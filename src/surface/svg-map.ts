@@ -7,7 +7,7 @@ import { SplinekitError, checkStatus } from '../core/errors.js';
 import type { Spline } from '../spline/spline.js';
 import type { SvgDocument } from '../svg/document.js';
 import type { MeshPointLike, SurfaceMesh } from './mesh.js';
-import { meshHandles, readMeshPoints } from './mesh-handle.js';
+import { readMeshPoints, searchHandle } from './mesh-handle.js';
 import { SurfaceSpline } from './spline.js';
 
 /** Where and how large {@link mapSplines} puts the drawing on the mesh. */
@@ -43,7 +43,7 @@ export function mapSplines(mesh: SurfaceMesh, drawing: SvgDocument | readonly Sp
   const cx = (xmin + xmax) / 2, cy = (ymin + ymax) / 2;
   const c = mesh.resolve(options.center, 'center');
   const up = options.up ?? [0, 0, 0];
-  const handle = meshHandles.get(mesh);
+  const handle = searchHandle(mesh);
   handle.resizeXY(total);
   const xy = handle.xyIn();
   let at = 0;

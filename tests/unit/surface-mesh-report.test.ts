@@ -72,10 +72,11 @@ test('every count of the mesh report lands in its own MeshInfo field', () => {
   expect(new Set(Object.values(expected)).size).toBe(Object.keys(expected).length); // all different
   const mesh = SurfaceMesh.fromArrays(positions, triangles);
   try {
-    const { bytes, warnings, landmarks, buildMs, ...counts } = mesh.info;
+    const { bytes, warnings, landmarks, guideFaces, buildMs, ...counts } = mesh.info;
     expect(counts).toEqual(expected);
     expect(bytes).toBeGreaterThan(0);
     expect(landmarks).toBe(0); // (16 faces: below the landmarks' minimum)
+    expect(guideFaces).toBe(0); // (and the coarse guide's)
     expect(buildMs.mesh).toBeGreaterThanOrEqual(0);
     expect(buildMs.search).toBeGreaterThanOrEqual(0);
     expect(warnings).toEqual([

@@ -54,7 +54,7 @@ class SurfaceMeshHandle {
     solver_.reset();
     mesh_ = std::make_unique<TriMesh>(std::move(mesh));
     build_ms_[0] = elapsed(start);
-    build_ms_[1] = 0;
+    build_ms_[1] = build_ms_[2] = 0;
     landmarks_ = std::max(0, landmarks);
     std::vector<double>().swap(positions_in_);
     std::vector<int>().swap(triangles_in_);
@@ -73,6 +73,27 @@ class SurfaceMeshHandle {
     solver_bytes_ = solver_->bytes();
   }
   bool searchBuilt() const { return solver_ != nullptr; }
+
+  // The solver's coarse guide (surface::CoarseGuide) from a decimation over the file's vertices:
+  // resizeGuide(F), write guideIn() (3 file vertex indices per face), buildGuide() (which builds the
+  // solver first if build() deferred it). On an error the solver keeps its earlier guide, if any.
+  void resizeGuide(int faces) { guide_in_.assign(3 * size_t(std::max(faces, 0)), 0); }
+  val guideIn() { return view_of(guide_in_); }
+  int buildGuide() {
+    if (!mesh_) return fail("no mesh");
+    buildSearch();
+    const auto start = clock::now();
+    std::string error;
+    const MeshStatus status = solver_->set_coarse_guide(guide_in_.data(), int(guide_in_.size() / 3), error);
+    std::vector<int>().swap(guide_in_);
+    if (status != MeshStatus::kOk) return fail(error);
+    build_ms_[2] = elapsed(start);
+    solver_bytes_ = solver_->bytes();
+    return kOk;
+  }
+  int guideFaces() const {
+    return solver_ && solver_->coarse_guide() ? int(solver_->coarse_guide()->coarse().triangles.size()) : 0;
+  }
 
   // The mesh report as {name: count} under the names of surface::report_fields (src/surface/mesh.ts
   // reads them by name); an empty object before a successful build().
@@ -94,8 +115,9 @@ class SurfaceMeshHandle {
     std::sort(duplicate_faces_.begin(), duplicate_faces_.end());
     return view_of(duplicate_faces_);
   }
-  // Milliseconds of the last build(): 0 the mesh, 1 its solver (search graph and landmarks).
-  double buildMilliseconds(int part) const { return part == 0 || part == 1 ? build_ms_[part] : 0; }
+  // Milliseconds of the last build(): 0 the mesh, 1 its solver (search graph and landmarks), 2 the
+  // coarse guide (buildGuide).
+  double buildMilliseconds(int part) const { return part >= 0 && part <= 2 ? build_ms_[part] : 0; }
 
   void resizePoints(int n) { points_in_.assign(3 * size_t(std::max(n, 0)), 0.0); }
   val pointsIn() { return view_of(points_in_); }
@@ -302,6 +324,7 @@ class SurfaceMeshHandle {
     out.set("walkedFaces", s.walked_faces);
     out.set("passFaces", s.pass_faces);
     out.set("windows", s.windows);
+    out.set("guided", s.guided);
     return out;
   }
 
@@ -380,12 +403,13 @@ class SurfaceMeshHandle {
   std::unique_ptr<CurveTracer> tracer_;
   std::vector<double> positions_in_;
   std::vector<int> triangles_in_;
+  std::vector<int> guide_in_;
   std::vector<double> points_in_, xy_in_, points_out_, xyz_out_, curve_ms_;
   std::vector<int> offsets_out_, duplicate_faces_;
   std::vector<MeshPoint> scratch_, spline_;
   std::vector<TraceStats> curve_counters_;
   PathStats path_counters_;
-  double length_ = 0, ms_ = 0, build_ms_[2] = {0, 0};
+  double length_ = 0, ms_ = 0, build_ms_[3] = {0, 0, 0};
   std::string error_;
 };
 
@@ -407,6 +431,10 @@ EMSCRIPTEN_BINDINGS(splinekit_surface) {
       .function("duplicateFaces", &SurfaceMeshHandle::duplicateFaces)
       .function("buildSearch", &SurfaceMeshHandle::buildSearch)
       .function("searchBuilt", &SurfaceMeshHandle::searchBuilt)
+      .function("resizeGuide", &SurfaceMeshHandle::resizeGuide)
+      .function("guideIn", &SurfaceMeshHandle::guideIn)
+      .function("buildGuide", &SurfaceMeshHandle::buildGuide)
+      .function("guideFaces", &SurfaceMeshHandle::guideFaces)
       .function("buildMilliseconds", &SurfaceMeshHandle::buildMilliseconds)
       .function("resizePoints", &SurfaceMeshHandle::resizePoints)
       .function("pointsIn", &SurfaceMeshHandle::pointsIn)

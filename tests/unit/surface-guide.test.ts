@@ -1,0 +1,142 @@
+// The coarse guide of long paths (SurfaceMeshOptions.guide; src/surface/coarse-guide.ts,
+// wasm/core/surface/coarse_guide.h) through the package: built by default on large meshes, what the
+// mesh reports, the memory it takes, deferred with the search, and curves on a flat U (points close in
+// space, far apart on the surface) whose long sides follow it and keep their closed-form lengths.
+import { beforeAll, describe, expect, test } from 'vitest';
+import { GUIDED_LANDMARKS, GUIDE_MIN_FACES, GUIDE_RATIO, SurfaceMesh, init, traceBezier, type MeshPoint } from '../../src/index.js';
+
+beforeAll(async () => {
+  await init();
+});
+
+// A flat U in the plane z = 0: a W × H grid of unit cells, split in two, without the slot of cells
+// x in [S, S + 2), y >= B: two arms joined at the bottom. 66,080 triangles (over GUIDE_MIN_FACES).
+const W = 260, H = 128, S = 129, B = 8;
+function uShape() {
+  const positions: number[] = [], triangles: number[] = [];
+  const id = (i: number, j: number) => j * (W + 1) + i;
+  for (let j = 0; j <= H; j++) for (let i = 0; i <= W; i++) positions.push(i, j, 0);
+  const cells = new Map<number, number>();
+  for (let j = 0; j < H; j++) {
+    for (let i = 0; i < W; i++) {
+      if (j >= B && i >= S && i < S + 2) continue;
+      cells.set(j * W + i, triangles.length / 6);
+      triangles.push(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  }
+  return { positions, triangles, cells };
+}
+
+/** The mesh point at (x, y) inside its cell (the cell's lower-right triangle when x - i >= y - j). */
+function pointAt(cells: Map<number, number>, x: number, y: number): MeshPoint {
+  const i = Math.floor(x), j = Math.floor(y);
+  const c = cells.get(j * W + i);
+  if (c === undefined) throw new Error(`(${x}, ${y}) is not on the U`);
+  const u = x - i, v = y - j;
+  if (u >= v) return { face: 2 * c, uv: [u - v, v] };
+  return { face: 2 * c + 1, uv: [u, v - u] };
+}
+
+/** The length of the polyline x y z … */
+function polylineLength(xyz: Float64Array): number {
+  let length = 0;
+  for (let i = 3; i < xyz.length; i += 3) length += Math.hypot(xyz[i] - xyz[i - 3], xyz[i + 1] - xyz[i - 2], xyz[i + 2] - xyz[i - 1]);
+  return length;
+}
+
+/** Whether two file faces share a vertex (consecutive points of a traced curve must share a face). */
+function shareAVertex(triangles: Int32Array, f: number, g: number): boolean {
+  for (let a = 0; a < 3; a++) for (let b = 0; b < 3; b++) if (triangles[3 * f + a] === triangles[3 * g + b]) return true;
+  return false;
+}
+
+describe('coarse guide', () => {
+  const { positions, triangles, cells } = uShape();
+  const faces = triangles.length / 3;
+
+  test('is built by default on large meshes, a sixteenth of the faces, with 4 landmarks; guide: false leaves it out', () => {
+    expect(faces).toBeGreaterThanOrEqual(GUIDE_MIN_FACES);
+    const guided = SurfaceMesh.fromArrays(positions, triangles);
+    const plain = SurfaceMesh.fromArrays(positions, triangles, { guide: false, landmarks: GUIDED_LANDMARKS });
+    try {
+      expect(guided.info.guideFaces).toBeGreaterThan(0.5 * GUIDE_RATIO * faces);
+      expect(guided.info.guideFaces).toBeLessThanOrEqual(GUIDE_RATIO * faces);
+      expect(guided.info.landmarks).toBe(GUIDED_LANDMARKS);
+      expect(guided.info.buildMs.guide).toBeGreaterThan(0);
+      expect(plain.info.guideFaces).toBe(0);
+      expect(plain.info.buildMs.guide).toBe(0);
+      // The guide's mesh and solver at a sixteenth of the size, and a vertex table: 2-20 bytes per face.
+      const extra = guided.info.bytes - plain.info.bytes;
+      expect(extra).toBeGreaterThan(2 * faces);
+      expect(extra).toBeLessThan(20 * faces);
+    } finally {
+      guided.dispose();
+      plain.dispose();
+    }
+  });
+
+  test('long sides follow it, every traced curve stays on the surface, and a straight curve keeps the closed-form length', () => {
+    const guided = SurfaceMesh.fromArrays(positions, triangles);
+    const plain = SurfaceMesh.fromArrays(positions, triangles, { guide: false });
+    try {
+      // Control points P0 = P1 in one arm and P2 = P3 in the other: the curve is the geodesic between
+      // them, round the slot's end (two corners), of the closed-form length.
+      const ends: [number, number, number, number][] = [[60.3, 120.2, 200.6, 115.1], [128.5, 100.25, 131.5, 126.75], [3.5, 9.5, 257.5, 127.5]];
+      let guidedSides = 0;
+      for (const [ax, ay, bx, by] of ends) {
+        const a = pointAt(cells, ax, ay), b = pointAt(cells, bx, by);
+        const expected = Math.hypot(ax - S, ay - B) + 2 + Math.hypot(bx - (S + 2), by - B);
+        for (const mesh of [guided, plain]) {
+          const traced = traceBezier(mesh, [a, a, b, b]);
+          if (mesh === guided) guidedSides += traced.counters.guided;
+          else expect(traced.counters.guided).toBe(0);
+          expect(Math.abs(polylineLength(traced.xyz) - expected), `(${ax}, ${ay}) -> (${bx}, ${by})`).toBeLessThan(1e-9 * expected);
+        }
+      }
+      expect(guidedSides).toBeGreaterThanOrEqual(ends.length);
+      // Random polygons over the whole U: consecutive points share a face, as without the guide.
+      let rng = 7;
+      const random = () => ((rng = (rng * 1103515245 + 12345) % 2 ** 31) / 2 ** 31);
+      const points = Array.from({ length: 24 }, () => {
+        for (;;) {
+          const x = random() * W, y = random() * H;
+          if (cells.has(Math.floor(y) * W + Math.floor(x))) return pointAt(cells, x, y);
+        }
+      });
+      for (let i = 0; i < points.length; i += 4) {
+        const traced = traceBezier(guided, points.slice(i, i + 4));
+        guidedSides += traced.counters.guided;
+        for (let k = 1; k < traced.points.length; k++) {
+          const f = traced.points[k - 1].face, g = traced.points[k].face;
+          expect(f === g || shareAVertex(guided.triangles, f, g), `curve ${i / 4}, points ${k - 1} and ${k}`).toBe(true);
+        }
+      }
+      expect(guidedSides).toBeGreaterThan(ends.length);
+    } finally {
+      guided.dispose();
+      plain.dispose();
+    }
+  });
+
+  test('waits with a deferred search: built by buildSearch() or the first curve, as the eager one', () => {
+    const eager = SurfaceMesh.fromArrays(positions, triangles);
+    const lazy = SurfaceMesh.fromArrays(positions, triangles, { deferSearch: true });
+    const called = SurfaceMesh.fromArrays(positions, triangles, { deferSearch: true });
+    try {
+      expect(lazy.info.guideFaces).toBe(0);
+      const a = pointAt(cells, 60.3, 120.2), b = pointAt(cells, 200.6, 115.1);
+      const first = traceBezier(lazy, [a, a, b, b]);
+      expect(first.counters.guided).toBeGreaterThan(0);
+      expect(lazy.info.guideFaces).toBe(eager.info.guideFaces);
+      expect(lazy.info.bytes).toBe(eager.info.bytes);
+      const info = called.buildSearch();
+      expect(info.guideFaces).toBe(eager.info.guideFaces);
+      expect(info.buildMs.guide).toBeGreaterThan(0);
+      expect(polylineLength(first.xyz)).toBe(polylineLength(traceBezier(eager, [a, a, b, b]).xyz));
+    } finally {
+      eager.dispose();
+      lazy.dispose();
+      called.dispose();
+    }
+  });
+});
