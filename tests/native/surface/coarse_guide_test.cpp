@@ -24,16 +24,8 @@ const TriMesh& coil() {
   return mesh;
 }
 
-// The thinned grid's triangles over the coil's file vertices (ring i, vertex k: i * kAround + k).
-std::vector<int> thinned_coil() {
-  const testing::Arrays coarse = testing::coil(kAlong / 4, kAround / 2);
-  std::vector<int> triangles;
-  for (int v : coarse.triangles) triangles.push_back(4 * (v / (kAround / 2)) * kAround + 2 * (v % (kAround / 2)));
-  return triangles;
-}
-
 void set_guide(GeodesicSolver& solver) {
-  const std::vector<int> triangles = thinned_coil();
+  const std::vector<int> triangles = testing::thinned_tube(kAlong, kAround, false, 4, 2);
   std::string error;
   ASSERT_EQ(solver.set_coarse_guide(triangles.data(), static_cast<int>(triangles.size() / 3), error), MeshStatus::kOk)
       << error;

@@ -164,6 +164,25 @@ Arrays tube(Centre c, Radius r, int along, int around, bool caps) {
   return a;
 }
 
+// The triangles of tube(..., along, around, caps) made `step_along` and `step_around` times coarser,
+// over the tube's own vertices (every step_along-th ring, every step_around-th vertex round it): what
+// a decimation that keeps a subset of the vertices gives, for the coarse guide (coarse_guide.h).
+// along and around must be multiples of the steps.
+inline std::vector<int> thinned_tube(int along, int around, bool caps, int step_along, int step_around) {
+  const int rings = along / step_along, round = around / step_around;
+  auto v = [&](int i, int k) { return i * step_along * around + (k % round) * step_around; };
+  std::vector<int> t;
+  for (int i = 0; i < rings; ++i)
+    for (int k = 0; k < round; ++k)
+      t.insert(t.end(), {v(i, k), v(i, k + 1), v(i + 1, k + 1), v(i, k), v(i + 1, k + 1), v(i + 1, k)});
+  if (caps) {
+    const int first = (along + 1) * around, last = first + 1;
+    for (int k = 0; k < round; ++k)
+      t.insert(t.end(), {first, v(0, k + 1), v(0, k), last, v(rings, k), v(rings, k + 1)});
+  }
+  return t;
+}
+
 // A tube wound into `turns` turns of a helix of radius 1 and `pitch` per turn, tube radius
 // `radius`, open at both ends (the issue's: 8 turns, 0.12, 0.3, 4000 x 48 quads = 384k triangles).
 inline Arrays coil(int along, int around, int turns = 8, double radius = 0.12, double pitch = 0.3) {

@@ -15,7 +15,8 @@
 // touch, and must meet 5°.
 // The angles are measured on the traced polyline (the segments tracing actually produced). The
 // 369k-triangle spot_loop2 is left to the benchmarks: it alone takes ~14 s here. Besides the shared
-// meshes: a coil, a knotted tube, a body with folded limbs and a noisy spot (tests/native/surface/test_meshes.h).
+// meshes: a coil, a knotted tube, a body with folded limbs (each also with a coarse guide) and a noisy
+// spot (tests/native/surface/test_meshes.h).
 #include "common/geometry.h"
 #include "surface/curves.h"
 #include "surface/tangent.h"
@@ -184,19 +185,35 @@ TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
   // The shared meshes, then generated shapes where points close in space are far apart on the
   // surface (issue 17; large enough for the search's landmarks; the folded body with specks of
   // debris beside it, as a scan has) and a noisy scan-like one.
-  std::vector<std::pair<std::string, testing::Arrays>> inputs;
+  // The generated tubes also with a coarse guide (coarse_guide.h; their grids thinned, an eighth of the
+  // faces), as SurfaceMesh gives meshes this large.
+  struct Input {
+    std::string name;
+    testing::Arrays arrays;
+    std::vector<int> guide;  // triangles over the mesh's vertices, or none
+  };
+  std::vector<Input> inputs;
   for (const char* name : meshes)
-    inputs.emplace_back(name, testing::read_mesh(testing::shared_data(std::string("meshes/") + name)));
-  inputs.emplace_back("coil (8 turns)", testing::coil(800, 16));
-  inputs.emplace_back("knotted tube", testing::knot_tube(1200, 12));
-  inputs.emplace_back("folded body, debris", testing::with_debris(testing::folded_body(600, 24), 40, 3, 0.002));
-  inputs.emplace_back("noisy spot",
-                      testing::noisy(testing::read_mesh(testing::shared_data("meshes/spot.obj")), 0.3, 3));
-  for (const auto& [name_string, arrays] : inputs) {
+    inputs.push_back({name, testing::read_mesh(testing::shared_data(std::string("meshes/") + name)), {}});
+  inputs.push_back({"coil (8 turns)", testing::coil(800, 16), {}});
+  inputs.push_back({"coil, guided", testing::coil(800, 16), testing::thinned_tube(800, 16, false, 4, 2)});
+  inputs.push_back({"knotted tube", testing::knot_tube(1200, 12), {}});
+  inputs.push_back({"knotted, guided", testing::knot_tube(1200, 12), testing::thinned_tube(1200, 12, true, 4, 2)});
+  inputs.push_back({"folded body, debris", testing::with_debris(testing::folded_body(600, 24), 40, 3, 0.002), {}});
+  inputs.push_back({"folded, guided", testing::with_debris(testing::folded_body(600, 24), 40, 3, 0.002),
+                    testing::thinned_tube(600, 24, true, 4, 2)});
+  inputs.push_back(
+      {"noisy spot", testing::noisy(testing::read_mesh(testing::shared_data("meshes/spot.obj")), 0.3, 3), {}});
+  for (const auto& [name_string, arrays, guide] : inputs) {
     const char* name = name_string.c_str();
     const auto t0 = std::chrono::steady_clock::now();
     const TriMesh mesh = testing::build(arrays);
     GeodesicSolver solver(mesh);
+    if (!guide.empty()) {
+      std::string error;
+      ASSERT_EQ(solver.set_coarse_guide(guide.data(), static_cast<int>(guide.size() / 3), error), MeshStatus::kOk)
+          << name << ": " << error;
+    }
     CurveTracer tracer(solver);
     const std::vector<int> faces = largest_component(mesh);
     std::mt19937 rng(2024);
@@ -231,8 +248,10 @@ TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
           check_smoothness(tracer, polygon, options, polyline, per_mesh[config.scheme == Scheme::kOLR], what);
       }
     }
+    if (!guide.empty()) EXPECT_GT(tracer.stats.paths.guided, 0) << name;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("  %-20s %6zu faces  %8zu polyline points  %.2f s", name, mesh.triangles.size(), points, seconds);
+    if (!guide.empty()) std::printf("  guided paths: %d", tracer.stats.paths.guided);
     for (int k = 0; k < 2; ++k) {
       const Smoothness& s = per_mesh[k];
       std::printf("  | %s ≤5°: %d/%d, cut: %d (%d over 5°)", k ? "OLR" : "RDC", s.within, s.interior, s.capped,
