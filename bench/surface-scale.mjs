@@ -47,7 +47,7 @@ async function meshFile(root, data, spec) {
   return out;
 }
 
-const COUNTERS = ['searchedPaths', 'seededPaths', 'visitedNodes', 'stripFaces', 'passes', 'passFaces', 'windows', 'flips', 'chords', 'walkedFaces'];
+const COUNTERS = ['searchedPaths', 'guided', 'seededPaths', 'visitedNodes', 'stripFaces', 'passes', 'passFaces', 'windows', 'flips', 'chords', 'walkedFaces'];
 
 function summary(ms, counters) {
   const out = { curves: ms.length, median_ms: percentile(ms, 0.5), p90_ms: percentile(ms, 0.9), p99_ms: percentile(ms, 0.99), max_ms: Math.max(...ms) };
@@ -133,7 +133,7 @@ const sum = (xs) => xs.reduce((a, b) => a + b, 0);
 
 /**
  * options: curves (random whole-surface and 3%-disc polygons traced with landmarks, default 100),
- * baseline (how many of them also without landmarks, 20), sources × targets of the shortest paths
+ * baseline (how many of them also without the coarse guide, 20), sources × targets of the shortest paths
  * (2 × 10), log.
  */
 export async function surfaceScaleBenchmarks(root, data, options = {}) {
@@ -148,9 +148,10 @@ export async function surfaceScaleBenchmarks(root, data, options = {}) {
     const t0 = performance.now();
     const results = {};
     let random, disc, pairs;
-    for (const landmarks of [8, 0]) {
-      const mesh = await SurfaceMesh.load(bytes, 'mesh.obj', { landmarks });
-      const key = landmarks ? 'with' : 'without';
+    // The defaults (a coarse guide and 4 landmarks on meshes of 65,536 faces or more), then the
+    // defaults before the guide (8 landmarks, no guide) on the first `baseline` polygons.
+    for (const key of ['with', 'without']) {
+      const mesh = await SurfaceMesh.load(bytes, 'mesh.obj', key === 'with' ? {} : { guide: false, landmarks: 8 });
       if (!random) {
         row.faces = mesh.faceCount;
         row.warnings = mesh.info.warnings;
@@ -159,20 +160,20 @@ export async function surfaceScaleBenchmarks(root, data, options = {}) {
         disc = moderatePolygons(mesh, curves, 3, 0.03);
         pairs = vertexPairs(mesh, sources, targets, 5);
       }
-      const n = landmarks ? curves : baseline;
+      const n = key === 'with' ? curves : baseline;
       for (let i = 0; i < 10; i++) traceBezier(mesh, disc[i % curves], OLR); // warm-up
       const r = traceAll(mesh, random.slice(0, n));
       const d = traceAll(mesh, disc.slice(0, n));
       const g = shortestPaths(mesh, pairs);
       results[key] = {
-        landmarks: mesh.info.landmarks, bytes_per_triangle: mesh.info.bytes / mesh.faceCount, build_ms: mesh.info.buildMs,
+        landmarks: mesh.info.landmarks, guide_faces: mesh.info.guideFaces, bytes_per_triangle: mesh.info.bytes / mesh.faceCount, build_ms: mesh.info.buildMs,
         random: { ...summary(r.ms, r.counters), valid: r.valid }, disc: { ...summary(d.ms, d.counters), valid: d.valid },
         // The first `baseline` curves, for the same-curves comparison.
         random_first: summary(r.ms.slice(0, baseline)), disc_first: summary(d.ms.slice(0, baseline)),
         geodesic: { ms: g.ms, lengths: g.lengths, median_nodes: percentile(g.nodes, 0.5) },
       };
       mesh.dispose();
-      log(`surface-scale ${spec.name} ${key} landmarks: random median ${results[key].random.median_ms.toFixed(2)} p99 ${results[key].random.p99_ms.toFixed(1)} ms, disc p99 ${results[key].disc.p99_ms.toFixed(2)} ms, geodesic mean ${(sum(g.ms) / g.ms.length).toFixed(2)} ms`);
+      log(`surface-scale ${spec.name} ${key} guide: random median ${results[key].random.median_ms.toFixed(2)} p99 ${results[key].random.p99_ms.toFixed(1)} ms, disc p99 ${results[key].disc.p99_ms.toFixed(2)} ms, geodesic mean ${(sum(g.ms) / g.ms.length).toFixed(2)} ms`);
     }
     row.with = results.with;
     row.without = results.without;
@@ -182,7 +183,7 @@ export async function surfaceScaleBenchmarks(root, data, options = {}) {
     row.geodesics = {
       pairs: pairs.length, sources, targets, exact_ms_per_source: exact.ms_per_source, exact_error: exact.error,
       ours: { total_ms: sum(results.with.geodesic.ms), median_ms: percentile(results.with.geodesic.ms, 0.5), median_nodes: results.with.geodesic.median_nodes, ...accuracy(results.with.geodesic.lengths, exact.distances) },
-      without_landmarks: { total_ms: sum(results.without.geodesic.ms), median_ms: percentile(results.without.geodesic.ms, 0.5), median_nodes: results.without.geodesic.median_nodes, ...accuracy(results.without.geodesic.lengths, exact.distances) },
+      without_guide: { total_ms: sum(results.without.geodesic.ms), median_ms: percentile(results.without.geodesic.ms, 0.5), median_nodes: results.without.geodesic.median_nodes, ...accuracy(results.without.geodesic.lengths, exact.distances) },
       flipout: flip.error ? { error: flip.error } : { construct_ms: flip.construct_ms, total_ms: sum(flip.ms), median_ms: percentile(flip.ms, 0.5), ...accuracy(flip.lengths, exact.distances) },
     };
     delete results.with.geodesic;
@@ -407,28 +408,35 @@ the knotted tube's passes -7% but its time +6% (the third trial costs what the p
 unchanged. In the refined search, a bitmask of non-empty radix buckets: 0.2% fewer instructions; the window's
 visibility test without its division: the same paths, 1-2% faster natively.
 
-What would pay (2026-12-05, native, \`surface_scale_bench c2f coil|knot|folded 10 <div>\`): a strip from a coarser
-mesh's path. For the long sides (512 strip faces or more) of 10 random polygons, the side's path on the same shape
-generated 1/div as fine, its points mapped to the nearest fine face centroids and joined, then straightened on the
-fine mesh, against the default candidates (search, reverse search, descent, straightening), ms for all the sides
-(two runs): coil, half (96k triangles), 28 sides: 72-84 ms and 14,033 flips -> straightening 26-30 ms and
-2,393-2,574 flips, plus 26-32 ms for the coarse paths, total length -0.01% (1 side longer, 1 shorter); knotted
-tube, half (36k), 27 sides: 114-128 ms, 36,267 flips -> 42-46 ms, 4,835-4,919 flips, plus 37-40 ms, +0.08% (1
-longer, 3 shorter); folded body, a quarter (24k), 23 sides: 182-193 ms, 35,863 flips -> 54-58 ms, 10,727-11,591
-flips, plus 15 ms, +0.83% (2 longer, 2 shorter: one side went round the other side of a limb); the coil at a
-quarter (12 quads round the tube) no better than the default (41-48 ms, ~17,400 flips). A decimated proxy does as
-well or better (\`c2f <shape> 10 <coarse.obj>\`; the benchmark's OBJ simplified by meshoptimizer 1.3.0, npm, MIT:
-MeshoptSimplifier.simplify(indices, positions, 3, a quarter or a sixteenth of the indices, 0.01), 60-230 ms in
-Node, which keeps a subset of the fine vertices): coil to 96k triangles, 28 sides: 76 ms, 14,033 flips -> 36 ms,
-3,344 flips, plus 37 ms, total length -0.09% (5 sides shorter, 2 longer); knotted tube to 36k, 27 sides: 114-118
-ms, 36,267 flips -> 26-28 ms, 3,065 flips, plus 31-33 ms, -0.37% (9 shorter, none longer); folded body to 24k
-(a sixteenth), 23 sides: 178-181 ms, 35,863 flips -> 55-61 ms, 11,326 flips, plus 15 ms, -1.8% (10 shorter, 1
-longer: the default's strips settle round the wrong side of a limb; to 96k: -1.2%); the coil to 24k: 48 ms, 5,174
-flips, +0.18%. So a proxy, its own paths found from a proxy coarser again, could take a long side's time to a half
-or a third and its length closer to the shortest; not done here: it needs the proxy's correspondence to the fine
-mesh (its vertices are fine vertices; the mapping here, a centroid grid and greedy joins, took 24-83 ms, more than
-the straightening it saves) and room in the memory budget (a quarter-size proxy with its own search structures is
-~29 bytes per fine triangle, against 116 used of ~120: the landmarks' 16 and more would have to go).`;
+Coarse-to-fine strips, first measured on their own (\`surface_scale_bench c2f\`: the long sides of 10 random polygons
+from the side's path on a coarser mesh, meshoptimizer's or the shape generated coarser), became the coarse guide
+(Coarse guide, above). The mapping measured then, face centroids in a grid joined by
+greedy walks, took 24-83 ms, more than the straightening it saved; descending face by face towards the coarse
+path's points took 2-5 ms for all the sides (coil, a 96k proxy: 74.6 ms and 14,033 flips by default -> 36.2 ms
+for the coarse paths, 4.7 for the mapping, 24.3 straightening with 2,184 flips, length -0.09%; knotted tube, 36k:
+115.3 -> 31.0 + 2.7 + 57.0, -0.37%; folded body, 24k: 179.8 -> 15.5 + 2.2 + 66.4, -1.8%).`;
+
+const GUIDE_NOTE = `Coarse guide (2026-12-05, wasm/core/surface/coarse_guide.*, src/surface/coarse-guide.ts). On a mesh of
+65,536 triangles or more SurfaceMesh simplifies the file to a sixteenth of its faces with meshoptimizer's
+\`simplify\` (edge collapses under a 1% error bound, npm, MIT: it keeps a subset of the vertices and the
+topology), and the core builds the guide's own mesh and search structures on those vertices. A kDual path (what
+curve tracing asks for) whose ends lie at least 24 of the guide's mean edges apart, in space or by the landmarks'
+bound, and whose path on the guide crosses at least 24 of its faces, gets its strip from there: each end to the
+nearest kept vertex (breadth first over the faces), the guide's locally shortest path between those (A* weighted
+1, exact on its dual graph: the guide's path picks the side of the limb or turn), then on the fine mesh face by
+face to the neighbour whose centroid is nearer each of that path's edge crossings, then the end, the greedy search
+on from where that stops, and the straightening as before. With the guide the mesh gets 4 landmarks instead of 8
+(GUIDED_LANDMARKS). Native, 30 random curves (\`surface_scale_bench curves <mesh> 30 3 [lengths] <guide.obj>\`,
+thread CPU time), without -> with: coil 360 -> 297 ms in all (median 12.8 -> 9.9), knotted tube 562 -> 393 (15.5 ->
+10.9), folded body 543 -> 424 (12.0 -> 9.2); nodes expanded per curve (median) 14,544 -> ~1,500 on the coil, flips
+2,573 -> ~900; total curve length -0.06%, -0.55%, -0.27% (curve by curve from -30% to +61% on the folded body: a
+side that went round a limb one way goes round it the other). Alternatives measured the same way: the guide's
+search greedy (weight 3, as the fine one): 1.02-1.18x the time, curves 0.1-0.5% longer; the refined search on
+the guide: 2-12x the time; a guide at a thirty-second or an eighth of the faces: 1.0-1.3x the time; 12 or 48
+guide faces as the threshold instead of 24: within the noise; 4 landmarks with the guide against 8: 0.95-1.01x
+the time, 8 bytes per triangle less; none: 3-25x (the guide's own search floods and the short paths lose their
+bound). In the wasm module the gain is smaller (the table above: the same polygons without and with the guide),
+the guide costs ~11 bytes per triangle and is built in ~0.7 µs per triangle, most of it the simplification.`;
 
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis
@@ -513,30 +521,30 @@ const pct = (x) => (x == null ? '–' : `${Number.isInteger(x) ? x : x.toFixed(1
 export function surfaceScaleSection(s, { date, machine }) {
   const m = s.meshes;
   const curves = [
-    '| mesh | triangles | landmarks | bytes / triangle | search build ms | random: median | p90 | p99 | max | valid | 3% disc: median | p99 | max | valid |',
-    '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+    '| mesh | triangles | landmarks | guide triangles | bytes / triangle | search build ms | guide build ms | random: median | p90 | p99 | max | valid | 3% disc: median | p99 | max | valid |',
+    '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
     ...m.map((r) => {
       const w = r.with;
-      return `| ${r.name} | ${r.faces} | ${w.landmarks} | ${f(w.bytes_per_triangle, 1)} | ${f(w.build_ms.search, 0)} | **${f(w.random.median_ms)}** | ${f(w.random.p90_ms)} | **${f(w.random.p99_ms, 1)}** | ${f(w.random.max_ms, 1)} | ${pct((100 * w.random.valid) / w.random.curves)} | ${f(w.disc.median_ms)} | **${f(w.disc.p99_ms)}** | ${f(w.disc.max_ms)} | ${pct((100 * w.disc.valid) / w.disc.curves)} |`;
+      return `| ${r.name} | ${r.faces} | ${w.landmarks} | ${w.guide_faces} | ${f(w.bytes_per_triangle, 1)} | ${f(w.build_ms.search, 0)} | ${f(w.build_ms.guide, 0)} | **${f(w.random.median_ms)}** | ${f(w.random.p90_ms)} | **${f(w.random.p99_ms, 1)}** | ${f(w.random.max_ms, 1)} | ${pct((100 * w.random.valid) / w.random.curves)} | ${f(w.disc.median_ms)} | **${f(w.disc.p99_ms)}** | ${f(w.disc.max_ms)} | ${pct((100 * w.disc.valid) / w.disc.curves)} |`;
     }),
   ];
   const before = [
-    `| mesh | random (first ${s.baseline}): median without → with landmarks | p99 without → with | 3% disc: median without → with | p99 without → with | bytes / triangle without → with |`,
+    `| mesh | random (first ${s.baseline}): median without → with the guide | p99 without → with | 3% disc: median without → with | p99 without → with | bytes / triangle without → with |`,
     '|---|---:|---:|---:|---:|---:|',
     ...m.map((r) => `| ${r.name} | ${f(r.without.random.median_ms)} → ${f(r.with.random_first.median_ms)} ms | ${f(r.without.random.p99_ms, 1)} → ${f(r.with.random_first.p99_ms, 1)} ms | ${f(r.without.disc.median_ms)} → ${f(r.with.disc_first.median_ms)} ms | ${f(r.without.disc.p99_ms)} → ${f(r.with.disc_first.p99_ms)} ms | ${f(r.without.bytes_per_triangle, 1)} → ${f(r.with.bytes_per_triangle, 1)} |`),
   ];
   const work = [
-    '| mesh | curves | searched paths | seeded paths | nodes expanded | strip faces | passes | faces passed over | windows | flips | chords kept | chord walks (faces) |',
-    '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+    '| mesh | curves | searched paths | guided | seeded paths | nodes expanded | strip faces | passes | faces passed over | windows | flips | chords kept | chord walks (faces) |',
+    '|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
     ...m.flatMap((r) => [['random, with', r.with.random], ['random, without', r.without.random], ['3% disc, with', r.with.disc]].map(([k, x]) =>
       `| ${r.name} | ${k} | ${COUNTERS.map((c) => `${f(x.median_counters[c], 0)} / ${f(x.p99_counters[c], 0)}`).join(' | ')} |`)),
   ];
   const geo = [
-    '| mesh | pairs | ours ms (total) | median ms | nodes (median) | within 0.5% | shorter | worst | without landmarks ms | flipOut ms (total) | flipOut within 0.5% | flipOut worst | ours / flipOut |',
+    '| mesh | pairs | ours ms (total) | median ms | nodes (median) | within 0.5% | shorter | worst | without guide ms | flipOut ms (total) | flipOut within 0.5% | flipOut worst | ours / flipOut |',
     '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
     ...m.map((r) => {
       const g = r.geodesics, o = g.ours, fl = g.flipout;
-      return `| ${r.name} | ${g.pairs} | ${f(o.total_ms, 0)} | ${f(o.median_ms)} | ${f(o.median_nodes, 0)} | **${pct(o.within_pct)}** | ${o.shorter ?? '–'} | ${f(o.worst_ratio, 4)} | ${f(g.without_landmarks.total_ms, 0)} | ${fl.error ? fl.error : f(fl.total_ms, 0)} | ${pct(fl.within_pct)} | ${f(fl.worst_ratio, 4)} | **${fl.error ? '–' : f(o.total_ms / fl.total_ms)}** |`;
+      return `| ${r.name} | ${g.pairs} | ${f(o.total_ms, 0)} | ${f(o.median_ms)} | ${f(o.median_nodes, 0)} | **${pct(o.within_pct)}** | ${o.shorter ?? '–'} | ${f(o.worst_ratio, 4)} | ${f(g.without_guide.total_ms, 0)} | ${fl.error ? fl.error : f(fl.total_ms, 0)} | ${pct(fl.within_pct)} | ${f(fl.worst_ratio, 4)} | **${fl.error ? '–' : f(o.total_ms / fl.total_ms)}** |`;
     }),
   ];
   const shapes = m.map((r) => `- **${r.name}**: ${r.what}.`).join('\n');
@@ -561,16 +569,18 @@ consecutive polyline points share a face. Targets: random median ≤ 5 ms, p99 �
 
 ${curves.join('\n')}
 
-The same first ${s.baseline} polygons of each kind without landmarks (SurfaceMesh option \`landmarks: 0\`, the
-Euclidean A* term alone, as before) and with them, in the same run (each mesh with landmarks first, then
-without: with the load falling during the run, the times compare the coil and the folded body, where
-they differ several-fold, better than the shared meshes, where the counters below say the work is
-about the same):
+The same first ${s.baseline} polygons of each kind without the coarse guide (SurfaceMesh options \`guide: false,
+landmarks: 8\`, the defaults before it) and with it (the defaults), in the same run (each mesh with the guide
+first, then without). Meshes under 65,536 triangles get no guide: there both runs are the same code, and
+their difference is the machine's noise:
 
 ${before.join('\n')}
 
+${GUIDE_NOTE}
+
 Work per curve, median / p99 over the curves (SurfaceMeshHandle counters, summed over a curve's
-shortest paths): paths searched and seeded (straightened through known paths), graph nodes the
+shortest paths): paths searched, of those the ones whose strips followed the coarse guide, paths seeded
+(straightened through known paths), graph nodes the
 searches expanded, faces of the strips straightened, straightening passes, the faces those passes
 worked on (a pass costs its strip; a window's pass, its window), windows straightened on their own,
 flips kept, chords among them, and the faces the chords' walks entered (kept or not):

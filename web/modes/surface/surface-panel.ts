@@ -219,7 +219,8 @@ export class SurfacePanel {
     ];
     if (info.nonManifoldEdges + info.nonManifoldVertices > 0) surface.push('non-manifold');
     this.meshFacts.set('Surface', surface.join(', '));
-    this.meshFacts.set('Memory', formatBytes(info.bytes), 'Bytes the mesh structures take in the WebAssembly core');
+    const guide = info.guideFaces > 0 ? `, including a coarse guide of ${info.guideFaces.toLocaleString('en-US')} triangles that finds long paths' way` : '';
+    this.meshFacts.set('Memory', formatBytes(info.bytes), `Bytes the mesh structures take in the WebAssembly core${guide}`);
     this.warnings.replaceChildren(...(info.warnings.length > 0 ? info.warnings.map((w) => h('li', {}, w)) : [h('li', { class: 'none' }, 'No warnings')]));
   }
 
