@@ -436,7 +436,15 @@ the guide: 2-12x the time; a guide at a thirty-second or an eighth of the faces:
 guide faces as the threshold instead of 24: within the noise; 4 landmarks with the guide against 8: 0.95-1.01x
 the time, 8 bytes per triangle less; none: 3-25x (the guide's own search floods and the short paths lose their
 bound). In the wasm module the gain is smaller (the table above: the same polygons without and with the guide),
-the guide costs ~11 bytes per triangle and is built in ~0.7 µs per triangle, most of it the simplification.`;
+the guide costs ~11 bytes per triangle and is built in ~0.7 µs per triangle, most of it the simplification.
+Measured and dropped: shortest paths (the refined search) confined to a corridor, the faces within 2 or 4 guide
+edges (in space, breadth first) of the strip that follows the guide's refined path (native, vertex pairs against
+MMP): coil 20.2 -> 8.2 / 14.5 s for 100 pairs, all within 0.5%; knotted tube 5.8 -> 2.2 s with 95% within 0.5%
+(worst 1.025: the guide's tube, a few vertices round, picks the other way round the tube where the two are close)
+/ 4.3 s, 100%; folded body (50 pairs) 5.1 -> 1.4 / 1.8 s; spot_loop2_369k (50) 1.23 -> 0.39 / 0.62 s; nefertiti
+(200) 0.83 -> 0.72 / 0.82 s, all within; the noisy spot (200) 4.8 -> 1.7 / 2.6 s but 98% / 98.5% within 0.5% (worst
+1.012 / 1.009: the decimation smooths the noise away, and among the noisy surface's near ties the guide's way is
+not the shortest). Shortest paths must stay within 0.5% of exact on 99% of pairs on any mesh, so it was not kept.`;
 
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis
