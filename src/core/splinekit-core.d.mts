@@ -137,6 +137,8 @@ export interface SurfaceMeshHandle extends EmbindObject {
   build(landmarks: number, deferSearch: boolean): number;
   buildSearch(): void;
   searchBuilt(): boolean;
+  /** The landmarks the solver will get (before buildSearch; no effect after). */
+  setLandmarks(landmarks: number): void;
   /** The coarse guide of long paths: resizeGuide(F), guideIn() gets 3 file vertex indices per face, buildGuide() (status; builds the solver first). */
   resizeGuide(faces: number): void;
   guideIn(): Int32Array;

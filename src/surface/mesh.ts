@@ -228,8 +228,8 @@ export class SurfaceMesh {
   /** Builds the search structures (and the coarse guide) now if SurfaceMeshOptions.deferSearch left them; returns info. */
   buildSearch(): MeshInfo {
     const handle = meshHandles.get(this);
-    handle.buildSearch();
     pendingSearch.get(this)?.();
+    handle.buildSearch();
     this.readSearch(handle);
     return this._info;
   }
@@ -241,20 +241,25 @@ export class SurfaceMesh {
     this._info.buildMs.search = handle.buildMilliseconds(1);
   }
 
-  /** Simplifies the mesh and gives the core its coarse guide (SurfaceMeshOptions.guide), after the search structures. */
-  private buildGuide(): void {
+  /**
+   * Simplifies the mesh, builds the search structures (deferred by fromArrays until now) and gives the
+   * core its coarse guide (SurfaceMeshOptions.guide). Where the simplifier cannot make a guide, the
+   * search gets DEFAULT_LANDMARKS unless `landmarks` were asked for.
+   */
+  private buildGuide(landmarksAsked: boolean): void {
     const handle = meshHandles.get(this);
     const start = performance.now();
     const kept = guideTriangles(this.positions, this.triangles);
+    const simplifyMs = performance.now() - start;
+    if (!kept && !landmarksAsked) handle.setLandmarks(DEFAULT_LANDMARKS);
+    handle.buildSearch();
     if (kept) {
       handle.resizeGuide(kept.length / 3);
       handle.guideIn().set(kept);
       checkStatus(handle.buildGuide(), 'coarse guide', () => handle.error());
-    } else {
-      handle.buildSearch();
     }
     this.readSearch(handle);
-    this._info.buildMs.guide = performance.now() - start;
+    this._info.buildMs.guide = kept ? simplifyMs + handle.buildMilliseconds(2) : simplifyMs;
   }
 
   /** A mesh from flat arrays (3 numbers per vertex, 3 vertex indices per triangle). */
@@ -275,20 +280,22 @@ export class SurfaceMesh {
         if (!Number.isInteger(v)) throw new SplinekitError('invalid-input', `triangle ${Math.floor(i / 3)} has a vertex index that is not an integer (${v})`);
         t[i] = v;
       }
-      checkStatus(handle.build(landmarks, options.deferSearch === true), 'invalid mesh', () => handle.error());
+      // (with a guide, the search waits for the simplification, which decides its landmarks)
+      checkStatus(handle.build(landmarks, guide || options.deferSearch === true), 'invalid mesh', () => handle.error());
     } catch (err) {
       handle.delete();
       throw err;
     }
     const mesh = new SurfaceMesh(handle, Float64Array.from(positions), Int32Array.from(triangles));
+    const landmarksAsked = options.landmarks !== undefined;
     if (guide && options.deferSearch === true) {
       pendingSearch.set(mesh, () => {
         pendingSearch.delete(mesh);
-        mesh.buildGuide();
+        mesh.buildGuide(landmarksAsked);
       });
     } else if (guide) {
       try {
-        mesh.buildGuide();
+        mesh.buildGuide(landmarksAsked);
       } catch (err) {
         mesh.dispose();
         throw err;

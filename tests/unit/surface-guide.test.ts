@@ -3,7 +3,7 @@
 // mesh reports, the memory it takes, deferred with the search, and curves on a flat U (points close in
 // space, far apart on the surface) whose long sides follow it and keep their closed-form lengths.
 import { beforeAll, describe, expect, test } from 'vitest';
-import { GUIDED_LANDMARKS, GUIDE_MIN_FACES, GUIDE_RATIO, SurfaceMesh, init, traceBezier, type MeshPoint } from '../../src/index.js';
+import { DEFAULT_LANDMARKS, GUIDED_LANDMARKS, GUIDE_MIN_FACES, GUIDE_RATIO, SurfaceMesh, init, traceBezier, type MeshPoint } from '../../src/index.js';
 
 beforeAll(async () => {
   await init();
@@ -137,6 +137,35 @@ describe('coarse guide', () => {
       eager.dispose();
       lazy.dispose();
       called.dispose();
+    }
+  });
+
+  test('a mesh the simplifier cannot bring to a quarter within its error bound gets no guide and the default landmarks', () => {
+    // A 185 × 185 grid crumpled: every vertex moved by up to 15 cells each way in x, y and z, so that
+    // hardly a collapse keeps the surface within 1% of its extent (68,450 triangles).
+    const n = 185, pos: number[] = [], tri: number[] = [];
+    let rng = 11;
+    const jitter = () => ((rng = (rng * 1103515245 + 12345) % 2 ** 31) / 2 ** 31 - 0.5) * 30;
+    for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) pos.push(i + jitter(), j + jitter(), jitter());
+    for (let j = 0; j < n; j++)
+      for (let i = 0; i < n; i++) {
+        const a = j * (n + 1) + i;
+        tri.push(a, a + 1, a + n + 2, a, a + n + 2, a + n + 1);
+      }
+    expect(tri.length / 3).toBeGreaterThanOrEqual(GUIDE_MIN_FACES);
+    for (const deferSearch of [false, true]) {
+      const spiky = SurfaceMesh.fromArrays(pos, tri, { deferSearch });
+      const asked = SurfaceMesh.fromArrays(pos, tri, { deferSearch, landmarks: 2 });
+      try {
+        const info = spiky.buildSearch();
+        expect(info.guideFaces).toBe(0);
+        expect(info.landmarks).toBe(DEFAULT_LANDMARKS);
+        expect(info.buildMs.guide).toBeGreaterThan(0); // (the simplification was tried)
+        expect(asked.buildSearch().landmarks).toBe(2);
+      } finally {
+        spiky.dispose();
+        asked.dispose();
+      }
     }
   });
 });

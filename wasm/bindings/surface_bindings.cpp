@@ -73,6 +73,10 @@ class SurfaceMeshHandle {
     solver_bytes_ = solver_->bytes();
   }
   bool searchBuilt() const { return solver_ != nullptr; }
+  // The landmarks the solver will get, before it is built (build() deferred it); no effect after.
+  void setLandmarks(int landmarks) {
+    if (!solver_) landmarks_ = std::max(0, landmarks);
+  }
 
   // The solver's coarse guide (surface::CoarseGuide) from a decimation over the file's vertices:
   // resizeGuide(F), write guideIn() (3 file vertex indices per face), buildGuide() (which builds the
@@ -431,6 +435,7 @@ EMSCRIPTEN_BINDINGS(splinekit_surface) {
       .function("duplicateFaces", &SurfaceMeshHandle::duplicateFaces)
       .function("buildSearch", &SurfaceMeshHandle::buildSearch)
       .function("searchBuilt", &SurfaceMeshHandle::searchBuilt)
+      .function("setLandmarks", &SurfaceMeshHandle::setLandmarks)
       .function("resizeGuide", &SurfaceMeshHandle::resizeGuide)
       .function("guideIn", &SurfaceMeshHandle::guideIn)
       .function("buildGuide", &SurfaceMeshHandle::buildGuide)
