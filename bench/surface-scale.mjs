@@ -444,7 +444,12 @@ MMP): coil 20.2 -> 8.2 / 14.5 s for 100 pairs, all within 0.5%; knotted tube 5.8
 / 4.3 s, 100%; folded body (50 pairs) 5.1 -> 1.4 / 1.8 s; spot_loop2_369k (50) 1.23 -> 0.39 / 0.62 s; nefertiti
 (200) 0.83 -> 0.72 / 0.82 s, all within; the noisy spot (200) 4.8 -> 1.7 / 2.6 s but 98% / 98.5% within 0.5% (worst
 1.012 / 1.009: the decimation smooths the noise away, and among the noisy surface's near ties the guide's way is
-not the shortest). Shortest paths must stay within 0.5% of exact on 99% of pairs on any mesh, so it was not kept.`;
+not the shortest). Shortest paths must stay within 0.5% of exact on 99% of pairs on any mesh, so it was not kept.
+Also dropped: the fine strip as the faces the guide's path crosses (each segment between its edge crossings walked
+straight, in each face's plane, the descent where that walk turns back or meets a boundary) instead of the
+descent towards the crossings: 30 random curves, native, knotted tube 391 -> 287 ms (the guided sides' flips
+39,092 -> 18,335), folded body 431 -> 414, but the coil 302 -> 331 (fewer flips, 4,224 -> 6,349 passes: a strip
+one face wide along the path leaves the bends to move a row a pass), spot_loop2_369k 1.07x; lengths within 0.1%.`;
 
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis
