@@ -408,7 +408,8 @@ the knotted tube's passes -7% but its time +6% (the third trial costs what the p
 unchanged. In the refined search, a bitmask of non-empty radix buckets: 0.2% fewer instructions; the window's
 visibility test without its division: the same paths, 1-2% faster natively.
 
-Coarse-to-fine strips, first measured on their own (\`surface_scale_bench c2f\`: the long sides of 10 random polygons
+Coarse-to-fine strips, first measured on their own (\`surface_scale_bench c2f\`, commit 1c27e98, since folded into the
+guide and removed: the long sides of 10 random polygons
 from the side's path on a coarser mesh, meshoptimizer's or the shape generated coarser), became the coarse guide
 (Coarse guide, above). The mapping measured then, face centroids in a grid joined by
 greedy walks, took 24-83 ms, more than the straightening it saved; descending face by face towards the coarse

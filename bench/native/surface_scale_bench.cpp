@@ -27,10 +27,6 @@
 //       p99); with `lengths`, every curve's polyline length too (to compare two builds' curves);
 //       with <guide.obj> (faces over the mesh's vertices: a decimation such as SurfaceMesh's, written
 //       with all of the mesh's vertices), the solver's coarse guide (GeodesicSolver::set_coarse_guide).
-//   surface_scale_bench c2f coil|knot|folded <polygons> <div>|<coarse.obj>
-//       an experiment: the long sides of random polygons straightened from a strip that follows the
-//       side's path on the same shape generated 1/div as fine (or on a given coarse mesh, such as a
-//       decimation of the benchmark's), against the default candidates.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -293,102 +289,6 @@ static int curves(const std::string& file, int polygons, unsigned seed, bool len
   return 0;
 }
 
-// Coarse-to-fine initial strips, an experiment (BENCHMARKS.md, "Surface at scale", What would pay): for the long
-// sides (512 strip faces or more) of random polygons on a generated shape, the side's path on a coarser mesh of the
-// same shape (generated 1/div as fine, or <coarse.obj>, e.g. a decimation), followed on the fine mesh face by face
-// down the distance of the face centroids to each of its points in turn (then the kDual search to the end point
-// if the descent stops elsewhere), and straightened there; against shortest_path's default candidates.
-static int c2f(const std::string& kind, int polygons, const std::string& coarser) {
-  const bool from_file = coarser.size() > 4 && coarser.substr(coarser.size() - 4) == ".obj";
-  const int div = from_file ? 1 : std::max(1, std::atoi(coarser.c_str()));
-  Arrays fine_arrays, coarse_arrays;
-  if (kind == "coil") {
-    fine_arrays = testing::coil(4000, 48), coarse_arrays = testing::coil(4000 / div, 48 / div);
-  } else if (kind == "knot") {
-    fine_arrays = testing::knot_tube(3000, 24), coarse_arrays = testing::knot_tube(3000 / div, std::max(6, 24 / div));
-  } else if (kind == "folded") {
-    fine_arrays = testing::folded_body(3000, 64), coarse_arrays = testing::folded_body(3000 / div, 64 / div);
-  } else {
-    std::fprintf(stderr, "surface_scale_bench: c2f needs coil, knot or folded\n");
-    return 2;
-  }
-  const TriMesh fine = testing::build(fine_arrays),
-                coarse = testing::build(from_file ? testing::read_mesh(coarser) : coarse_arrays);
-  const int nf = static_cast<int>(fine.triangles.size());
-  GeodesicSolver fine_solver(fine), coarse_solver(coarse);
-  std::vector<Vec3> centroid(nf);
-  for (int f = 0; f < nf; ++f) {
-    const auto& t = fine.triangles[f];
-    centroid[f] = (fine.positions[t[0]] + fine.positions[t[1]] + fine.positions[t[2]]) / 3;
-  }
-  std::vector<int> marks(nf, -1), strip, tail;
-  std::vector<Vec3> along;
-  // From strip.back() to the neighbour whose centroid is nearest x while one is nearer.
-  auto descend_to = [&](const Vec3& x) {
-    for (int f = strip.back();;) {
-      int next = -1;
-      double d = (centroid[f] - x).squaredNorm();
-      for (int g : fine.adjacency[f])
-        if (g >= 0 && (centroid[g] - x).squaredNorm() < d) d = (centroid[g] - x).squaredNorm(), next = g;
-      if (next < 0) return;
-      strip.push_back(f = next);
-    }
-  };
-  AreaPoints point(fine, 3);
-  struct Sum {
-    double ms = 0, length = 0;
-    long flips = 0;
-  } before, after;
-  double coarse_ms = 0, map_ms = 0;
-  int sides = 0, longer = 0, shorter = 0, searched_to_end = 0;
-  GeodesicPath path, coarse_path;
-  for (int i = 0; i < polygons; ++i) {
-    const MeshPoint polygon[4] = {point(), point(), point(), point()};
-    for (int s = 0; s < 3; ++s) {
-      const MeshPoint &a = polygon[s], &b = polygon[s + 1];
-      PathStats was, now;
-      double t0 = thread_ms();
-      fine_solver.shortest_path(a, b, path, &was, SearchGraph::kDual);
-      const double ms = thread_ms() - t0;
-      if (was.strip_faces < 512) continue;
-      const double length = path_length(fine, path);
-      ++sides, before.ms += ms, before.length += length, before.flips += was.accepted_flips;
-      const MeshPoint ca = testing::point_at(coarse, eval_position(fine, a)),
-                      cb = testing::point_at(coarse, eval_position(fine, b));
-      t0 = thread_ms();
-      coarse_solver.shortest_path(ca, cb, coarse_path, nullptr, SearchGraph::kDual);
-      coarse_ms += thread_ms() - t0;
-      t0 = thread_ms();
-      path_positions(coarse, coarse_path, along);
-      strip.assign(1, a.face);
-      for (size_t k = 1; k + 1 < along.size(); ++k) descend_to(along[k]);
-      descend_to(eval_position(fine, b));
-      if (strip.back() != b.face) {
-        fine_solver.initial_strip(MeshPoint{strip.back(), splinekit::Vec2(1.0 / 3, 1.0 / 3)}, b, tail, nullptr,
-                                  SearchGraph::kDual);
-        strip.insert(strip.end(), tail.begin() + 1, tail.end());
-        ++searched_to_end;
-      }
-      remove_loops(strip, marks);
-      map_ms += thread_ms() - t0;
-      t0 = thread_ms();
-      fine_solver.straighten(a, b, strip, path, &now);
-      after.ms += thread_ms() - t0;
-      const double c2f_length = path_length(fine, path);
-      after.length += c2f_length, after.flips += now.accepted_flips;
-      longer += c2f_length > length * (1 + 1e-6), shorter += c2f_length < length * (1 - 1e-6);
-    }
-  }
-  std::printf(
-      "{\"shape\":\"%s\",\"fine_triangles\":%d,\"coarse_triangles\":%zu,\"sides\":%d,"
-      "\"default\":{\"ms\":%.1f,\"flips\":%ld,\"length\":%.6f},\"coarse_paths_ms\":%.1f,\"map_ms\":%.1f,"
-      "\"searched_to_end\":%d,\"straightened\":{\"ms\":%.1f,\"flips\":%ld,\"length\":%.6f},\"longer\":%d,"
-      "\"shorter\":%d}\n",
-      kind.c_str(), nf, coarse.triangles.size(), sides, before.ms, before.flips, before.length, coarse_ms, map_ms,
-      searched_to_end, after.ms, after.flips, after.length, longer, shorter);
-  return 0;
-}
-
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   try {
@@ -403,7 +303,6 @@ int main(int argc, char** argv) {
       for (int i = 5; i < argc; ++i) std::string(argv[i]) == "lengths" ? void(lengths = true) : void(guide = argv[i]);
       return curves(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), lengths, guide);
     }
-    if (mode == "c2f" && argc >= 5) return c2f(argv[2], std::atoi(argv[3]), argv[4]);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "surface_scale_bench: %s\n", e.what());
     return 1;
@@ -414,7 +313,6 @@ int main(int argc, char** argv) {
                "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
                "       surface_scale_bench search <mesh> <pairs> <seed>\n"
                "       surface_scale_bench steiner <mesh> <sources> <targets> <seed>\n"
-               "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths] [<guide.obj>]\n"
-               "       surface_scale_bench c2f coil|knot|folded <polygons> <div>|<coarse.obj>\n");
+               "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths] [<guide.obj>]\n");
   return 2;
 }

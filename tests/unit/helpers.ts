@@ -83,3 +83,45 @@ export const ILLUSTRATOR_BODY = `
 </switch>
 <i:pgf  id="adobe_illustrator_pgf"><![CDATA[ eJzs &ns_svg; stays as it is ]]></i:pgf>
 </svg>`;
+
+/** A flat U mesh (uShape) and the mesh points on it. */
+export interface UShape {
+  positions: number[];
+  triangles: number[];
+  /** Whether (x, y) lies on the U (outside the slot and the grid's edges). */
+  on(x: number, y: number): boolean;
+  /** The mesh point at (x, y): its cell's lower-right triangle when x - i >= y - j, else the other. */
+  pointAt(x: number, y: number): { face: number; uv: [number, number] };
+}
+
+/**
+ * A flat U in the plane z = 0: a w × h grid of unit cells, each split in two, without the slot of
+ * cells x in [s, s + 2), y >= b: two arms joined at the bottom (points close in space, far apart on
+ * the surface; the shortest path between the arms goes round the slot's two corners (s, b) and (s + 2, b)).
+ */
+export function uShape(w: number, h: number, s: number, b: number): UShape {
+  const positions: number[] = [], triangles: number[] = [];
+  const id = (i: number, j: number) => j * (w + 1) + i;
+  for (let j = 0; j <= h; j++) for (let i = 0; i <= w; i++) positions.push(i, j, 0);
+  const cells = new Map<number, number>();
+  for (let j = 0; j < h; j++) {
+    for (let i = 0; i < w; i++) {
+      if (j >= b && i >= s && i < s + 2) continue;
+      cells.set(j * w + i, triangles.length / 6);
+      triangles.push(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  }
+  const cell = (x: number, y: number) => (x >= 0 && x < w && y >= 0 && y < h ? cells.get(Math.floor(y) * w + Math.floor(x)) : undefined);
+  return {
+    positions,
+    triangles,
+    on: (x, y) => cell(x, y) !== undefined,
+    pointAt(x, y) {
+      const c = cell(x, y);
+      if (c === undefined) throw new Error(`(${x}, ${y}) is not on the U`);
+      const u = x - Math.floor(x), v = y - Math.floor(y);
+      // Face 2c: (i,j), (i+1,j), (i+1,j+1): x = i + a + b, y = j + b. Face 2c+1: (i,j), (i+1,j+1), (i,j+1): x = i + a, y = j + a + b.
+      return u >= v ? { face: 2 * c, uv: [u - v, v] } : { face: 2 * c + 1, uv: [u, v - u] };
+    },
+  };
+}

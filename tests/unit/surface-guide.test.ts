@@ -3,39 +3,15 @@
 // mesh reports, the memory it takes, deferred with the search, and curves on a flat U (points close in
 // space, far apart on the surface) whose long sides follow it and keep their closed-form lengths.
 import { beforeAll, describe, expect, test } from 'vitest';
-import { DEFAULT_LANDMARKS, GUIDED_LANDMARKS, GUIDE_MIN_FACES, GUIDE_RATIO, SurfaceMesh, init, traceBezier, type MeshPoint } from '../../src/index.js';
+import { uShape } from './helpers.js';
+import { DEFAULT_LANDMARKS, GUIDED_LANDMARKS, GUIDE_MIN_FACES, GUIDE_RATIO, SurfaceMesh, init, traceBezier } from '../../src/index.js';
 
 beforeAll(async () => {
   await init();
 });
 
-// A flat U in the plane z = 0: a W × H grid of unit cells, split in two, without the slot of cells
-// x in [S, S + 2), y >= B: two arms joined at the bottom. 66,080 triangles (over GUIDE_MIN_FACES).
+// The flat U (helpers.ts): 260 × 128 unit cells, the slot at x in [S, S + 2), y >= B.
 const W = 260, H = 128, S = 129, B = 8;
-function uShape() {
-  const positions: number[] = [], triangles: number[] = [];
-  const id = (i: number, j: number) => j * (W + 1) + i;
-  for (let j = 0; j <= H; j++) for (let i = 0; i <= W; i++) positions.push(i, j, 0);
-  const cells = new Map<number, number>();
-  for (let j = 0; j < H; j++) {
-    for (let i = 0; i < W; i++) {
-      if (j >= B && i >= S && i < S + 2) continue;
-      cells.set(j * W + i, triangles.length / 6);
-      triangles.push(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1));
-    }
-  }
-  return { positions, triangles, cells };
-}
-
-/** The mesh point at (x, y) inside its cell (the cell's lower-right triangle when x - i >= y - j). */
-function pointAt(cells: Map<number, number>, x: number, y: number): MeshPoint {
-  const i = Math.floor(x), j = Math.floor(y);
-  const c = cells.get(j * W + i);
-  if (c === undefined) throw new Error(`(${x}, ${y}) is not on the U`);
-  const u = x - i, v = y - j;
-  if (u >= v) return { face: 2 * c, uv: [u - v, v] };
-  return { face: 2 * c + 1, uv: [u, v - u] };
-}
 
 /** The length of the polyline x y z … */
 function polylineLength(xyz: Float64Array): number {
@@ -51,7 +27,8 @@ function shareAVertex(triangles: Int32Array, f: number, g: number): boolean {
 }
 
 describe('coarse guide', () => {
-  const { positions, triangles, cells } = uShape();
+  const u = uShape(W, H, S, B);
+  const { positions, triangles } = u;
   const faces = triangles.length / 3;
 
   test('is built by default on large meshes, a sixteenth of the faces, with 4 landmarks; guide: false leaves it out', () => {
@@ -84,7 +61,7 @@ describe('coarse guide', () => {
       const ends: [number, number, number, number][] = [[60.3, 120.2, 200.6, 115.1], [128.5, 100.25, 131.5, 126.75], [3.5, 9.5, 257.5, 127.5]];
       let guidedSides = 0;
       for (const [ax, ay, bx, by] of ends) {
-        const a = pointAt(cells, ax, ay), b = pointAt(cells, bx, by);
+        const a = u.pointAt(ax, ay), b = u.pointAt(bx, by);
         const expected = Math.hypot(ax - S, ay - B) + 2 + Math.hypot(bx - (S + 2), by - B);
         for (const mesh of [guided, plain]) {
           const traced = traceBezier(mesh, [a, a, b, b]);
@@ -100,7 +77,7 @@ describe('coarse guide', () => {
       const points = Array.from({ length: 24 }, () => {
         for (;;) {
           const x = random() * W, y = random() * H;
-          if (cells.has(Math.floor(y) * W + Math.floor(x))) return pointAt(cells, x, y);
+          if (u.on(x, y)) return u.pointAt(x, y);
         }
       });
       for (let i = 0; i < points.length; i += 4) {
@@ -124,7 +101,7 @@ describe('coarse guide', () => {
     const called = SurfaceMesh.fromArrays(positions, triangles, { deferSearch: true });
     try {
       expect(lazy.info.guideFaces).toBe(0);
-      const a = pointAt(cells, 60.3, 120.2), b = pointAt(cells, 200.6, 115.1);
+      const a = u.pointAt(60.3, 120.2), b = u.pointAt(200.6, 115.1);
       const first = traceBezier(lazy, [a, a, b, b]);
       expect(first.counters.guided).toBeGreaterThan(0);
       expect(lazy.info.guideFaces).toBe(eager.info.guideFaces);

@@ -2,44 +2,19 @@
 // through the package: the option, what the mesh reports, the memory they take, and paths on a flat
 // U (points close in space, far apart on the surface) that keep their closed-form lengths.
 import { beforeAll, describe, expect, test } from 'vitest';
-import { DEFAULT_LANDMARKS, SplinekitError, SurfaceMesh, init, traceBezier, type MeshPoint } from '../../src/index.js';
+import { uShape } from './helpers.js';
+import { DEFAULT_LANDMARKS, SplinekitError, SurfaceMesh, init, traceBezier } from '../../src/index.js';
 
 beforeAll(async () => {
   await init();
 });
 
-// A flat U in the plane z = 0: a W × H grid of unit cells, split in two, without the slot of cells
-// x in [S, S + 2), y >= B: two arms joined at the bottom. 40,736 triangles.
+// The flat U (helpers.ts): 160 × 64 unit cells, the slot at x in [S, S + 2), y >= B.
 const W = 160, H = 64, S = 79, B = 8;
-function uShape() {
-  const positions: number[] = [], triangles: number[] = [];
-  const id = (i: number, j: number) => j * (W + 1) + i;
-  for (let j = 0; j <= H; j++) for (let i = 0; i <= W; i++) positions.push(i, j, 0);
-  const cells: [number, number][] = [];
-  for (let j = 0; j < H; j++) {
-    for (let i = 0; i < W; i++) {
-      if (j >= B && i >= S && i < S + 2) continue;
-      cells.push([i, j]);
-      triangles.push(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j), id(i + 1, j + 1), id(i, j + 1));
-    }
-  }
-  return { positions, triangles, cells };
-}
-
-/** The mesh point at (x, y) inside cell (i, j) (its lower-right triangle when x - i >= y - j). */
-function pointAt(cells: [number, number][], x: number, y: number): MeshPoint {
-  const i = Math.floor(x), j = Math.floor(y);
-  const c = cells.findIndex(([ci, cj]) => ci === i && cj === j);
-  if (c < 0) throw new Error(`(${x}, ${y}) is not on the U`);
-  const u = x - i, v = y - j;
-  // Face 2c: (i,j), (i+1,j), (i+1,j+1): p = p0 + a (p1 - p0) + b (p2 - p0) -> x = i + a + b, y = j + b.
-  if (u >= v) return { face: 2 * c, uv: [u - v, v] };
-  // Face 2c+1: (i,j), (i+1,j+1), (i,j+1): x = i + a, y = j + a + b.
-  return { face: 2 * c + 1, uv: [u, v - u] };
-}
 
 describe('landmarks', () => {
-  const { positions, triangles, cells } = uShape();
+  const u = uShape(W, H, S, B);
+  const { positions, triangles } = u;
 
   test('are on by default on large meshes, take 2 bytes per face each, and can be turned off', () => {
     const withLandmarks = SurfaceMesh.fromArrays(positions, triangles);
@@ -67,13 +42,13 @@ describe('landmarks', () => {
       try {
         const corner1 = [S, B], corner2 = [S + 2, B];
         for (const [ax, ay, bx, by] of [[70.3, 60.2, 90.6, 55.1], [78.9, 63.5, 81.2, 63.5], [10.25, 40.5, 150.5, 12.75], [5.5, 9.5, 158.5, 62.5]]) {
-          const path = mesh.shortestPath(pointAt(cells, ax, ay), pointAt(cells, bx, by));
+          const path = mesh.shortestPath(u.pointAt(ax, ay), u.pointAt(bx, by));
           // Round the two reflex corners of the slot's end (both points lie above it, in their arms).
           const expected = Math.hypot(ax - corner1[0], ay - corner1[1]) + 2 + Math.hypot(bx - corner2[0], by - corner2[1]);
           expect(Math.abs(path.length - expected), `landmarks ${landmarks}: (${ax}, ${ay}) -> (${bx}, ${by})`).toBeLessThan(1e-9);
         }
         // Points below the slot see each other: the straight segment.
-        const path = mesh.shortestPath(pointAt(cells, 3.5, 1.5), pointAt(cells, 155.25, 6.5));
+        const path = mesh.shortestPath(u.pointAt(3.5, 1.5), u.pointAt(155.25, 6.5));
         expect(Math.abs(path.length - Math.hypot(155.25 - 3.5, 5))).toBeLessThan(1e-9);
       } finally {
         mesh.dispose();
@@ -95,7 +70,7 @@ describe('landmarks', () => {
       // (the search graph, centroids and landmarks take over 40 bytes per triangle)
       expect(eager.info.bytes - lazy.info.bytes).toBeGreaterThan(40 * faces);
       // The first path builds them; info then counts them as the eager mesh does.
-      const a = pointAt(cells, 70.3, 60.2), b = pointAt(cells, 90.6, 55.1);
+      const a = u.pointAt(70.3, 60.2), b = u.pointAt(90.6, 55.1);
       const lazyPath = lazy.shortestPath(a, b);
       expect(lazy.searchBuilt).toBe(true);
       expect(lazy.info.landmarks).toBe(8);
@@ -121,7 +96,7 @@ describe('landmarks', () => {
     const mesh = SurfaceMesh.fromArrays(positions, triangles);
     try {
       // A control polygon that crosses the slot twice: its sides go round the slot's end.
-      const traced = traceBezier(mesh, [pointAt(cells, 20.5, 60.5), pointAt(cells, 120.5, 50.5), pointAt(cells, 30.5, 20.5), pointAt(cells, 140.5, 40.5)]);
+      const traced = traceBezier(mesh, [u.pointAt(20.5, 60.5), u.pointAt(120.5, 50.5), u.pointAt(30.5, 20.5), u.pointAt(140.5, 40.5)]);
       const c = traced.counters;
       expect(c.searchedPaths + c.seededPaths).toBeGreaterThan(20);
       expect(c.flips).toBeGreaterThan(0);
