@@ -425,8 +425,9 @@ curve tracing asks for) whose ends lie at least 24 of the guide's mean edges apa
 bound, and whose path on the guide crosses at least 24 of its faces, gets its strip from there: each end to the
 nearest kept vertex (breadth first over the faces), the guide's locally shortest path between those (A* weighted
 1, exact on its dual graph: the guide's path picks the side of the limb or turn), then on the fine mesh face by
-face to the neighbour whose centroid is nearer each of that path's edge crossings, then the end, the greedy search
-on from where that stops, and the straightening as before. With the guide the mesh gets 4 landmarks instead of 8
+face to the neighbour whose centroid is nearer each of that path's edge crossings, then the end (on long thin
+faces, across the faces each segment between them crosses: below), the greedy search on from where that stops,
+and the straightening as before. With the guide the mesh gets 4 landmarks instead of 8
 (GUIDED_LANDMARKS). Native, 30 random curves (\`surface_scale_bench curves <mesh> 30 3 [lengths] <guide.obj>\`,
 thread CPU time), without -> with: coil 360 -> 297 ms in all (median 12.8 -> 9.9), knotted tube 562 -> 393 (15.5 ->
 10.9), folded body 543 -> 424 (12.0 -> 9.2); nodes expanded per curve (median) 14,544 -> ~1,500 on the coil, flips
@@ -446,11 +447,14 @@ MMP): coil 20.2 -> 8.2 / 14.5 s for 100 pairs, all within 0.5%; knotted tube 5.8
 (200) 0.83 -> 0.72 / 0.82 s, all within; the noisy spot (200) 4.8 -> 1.7 / 2.6 s but 98% / 98.5% within 0.5% (worst
 1.012 / 1.009: the decimation smooths the noise away, and among the noisy surface's near ties the guide's way is
 not the shortest). Shortest paths must stay within 0.5% of exact on 99% of pairs on any mesh, so it was not kept.
-Also dropped: the fine strip as the faces the guide's path crosses (each segment between its edge crossings walked
-straight, in each face's plane, the descent where that walk turns back or meets a boundary) instead of the
-descent towards the crossings: 30 random curves, native, knotted tube 391 -> 287 ms (the guided sides' flips
-39,092 -> 18,335), folded body 431 -> 414, but the coil 302 -> 331 (fewer flips, 4,224 -> 6,349 passes: a strip
-one face wide along the path leaves the bends to move a row a pass), spot_loop2_369k 1.07x; lengths within 0.1%.`;
+Walking instead of descending: the fine strip as the faces the guide's path crosses (each segment between its edge
+crossings walked straight, in each face's plane; the descent where that walk turns back or meets a boundary), 30
+random curves, native: knotted tube 391 -> 287 ms (the guided sides' flips 39,092 -> 18,335), folded body 431 ->
+414, but the coil 302 -> 331 (fewer flips, 4,224 -> 6,349 passes: a strip one face wide leaves the bends to move a
+row a pass), spot_loop2_369k 1.07x; lengths within 0.1%. So the guide walks where the nearest centroid misleads,
+on long thin faces: where the median face's longest edge is over 3 times its shortest
+(ShortestPathOptions::guide_walk_aspect; the knotted tube's about 6:1, the folded body's 18:1, the coil's and the
+scans' under 1.5:1).`;
 
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis

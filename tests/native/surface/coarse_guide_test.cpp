@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,25 +25,33 @@ const TriMesh& coil() {
   return mesh;
 }
 
-void set_guide(GeodesicSolver& solver) {
-  const std::vector<int> triangles = testing::thinned_tube(kAlong, kAround, false, 4, 2);
+const TriMesh& knot() {
+  static const TriMesh mesh = testing::build(testing::knot_tube(1200, 12));  // 28,824 triangles, about 9:1
+  return mesh;
+}
+
+void set_guide(GeodesicSolver& solver,
+               const std::vector<int>& triangles = testing::thinned_tube(kAlong, kAround, false, 4, 2)) {
   std::string error;
   ASSERT_EQ(solver.set_coarse_guide(triangles.data(), static_cast<int>(triangles.size() / 3), error), MeshStatus::kOk)
       << error;
 }
 
-// Between vertices on different turns of the coil: the guided paths are real paths (adjacent faces,
-// the given ends), never shorter than the exact distance and within 5% of it (locally shortest paths,
-// as curve tracing asks for: on a coil a few lie along another side of the tube than the shortest),
-// in total no longer than the greedy strips' straightened, with fewer flips and a search a fraction
-// as large (2026-12-05: 0.76x the flips, 0.998x the length).
-TEST(CoarseGuide, LongPathsFollowItNeverShorterThanExactAndWithFewerFlips) {
-  const TriMesh& mesh = coil();
+// Between vertices far apart on a tube: the guided paths are real paths (adjacent faces, the given
+// ends), with `exact`, never shorter than the exact distance and within 5% of it (locally shortest
+// paths, as curve tracing asks for: on a coil a few lie along another side of the tube than the
+// shortest), in total no longer than the greedy strips' straightened but for `slack`, with fewer flips
+// and a search a fraction as large. `walks`: whether the strip walks the guide's path (long thin
+// faces) or descends towards it.
+void expect_guided_paths_follow(const TriMesh& mesh, const std::vector<int>& guide, bool walks, bool exact,
+                                double slack) {
   GeodesicSolver guided(mesh), plain(mesh);
-  set_guide(guided);
+  set_guide(guided, guide);
   ASSERT_NE(guided.coarse_guide(), nullptr);
-  EXPECT_EQ(guided.coarse_guide()->coarse().triangles.size(), mesh.triangles.size() / 8);
-  reference::ExactGeodesic exact = testing::exact_geodesic(mesh);
+  EXPECT_EQ(guided.coarse_guide()->coarse().triangles.size(), guide.size() / 3);
+  EXPECT_EQ(guided.coarse_guide()->walks(), walks);
+  std::unique_ptr<reference::ExactGeodesic> reference;
+  if (exact) reference = std::make_unique<reference::ExactGeodesic>(testing::exact_geodesic(mesh));
   std::mt19937 rng(31);
   std::uniform_int_distribution<int> vertex(0, static_cast<int>(mesh.positions.size()) - 1);
   PathStats with, without;
@@ -50,7 +59,7 @@ TEST(CoarseGuide, LongPathsFollowItNeverShorterThanExactAndWithFewerFlips) {
   int long_pairs = 0;
   for (int s = 0; s < 3; ++s) {
     const int source = vertex(rng);
-    const std::vector<double> d = exact.distances(source);
+    const std::vector<double> d = reference ? reference->distances(source) : std::vector<double>();
     for (int k = 0; k < 10; ++k) {
       const int target = vertex(rng);
       const MeshPoint a = vertex_point(mesh, source), b = vertex_point(mesh, target);
@@ -63,19 +72,33 @@ TEST(CoarseGuide, LongPathsFollowItNeverShorterThanExactAndWithFewerFlips) {
       EXPECT_NEAR((eval_position(mesh, path.end) - eval_position(mesh, b)).norm(), 0, 1e-12);
       for (size_t j = 1; j < path.strip.size(); ++j) ASSERT_GE(edge_to(mesh, path.strip[j - 1], path.strip[j]), 0);
       const double length = path_length(mesh, path);
-      EXPECT_GE(length, d[target] * (1 - 1e-9)) << source << " -> " << target;
+      if (reference) EXPECT_GE(length, d[target] * (1 - 1e-9)) << source << " -> " << target;
       if (one.guided == 0) continue;
       ++long_pairs;
-      EXPECT_LE(length, d[target] * 1.05) << source << " -> " << target;
+      if (reference) EXPECT_LE(length, d[target] * 1.05) << source << " -> " << target;
       with_length += length, without_length += path_length(mesh, before);
     }
   }
   EXPECT_GE(long_pairs, 20);
   EXPECT_EQ(with.guided, long_pairs);
   EXPECT_EQ(without.guided, 0);
-  EXPECT_LE(with_length, without_length * (1 + 1e-3));
+  EXPECT_LE(with_length, without_length * (1 + slack)) << with_length << " vs " << without_length;
   EXPECT_LT(with.accepted_flips, without.accepted_flips);
   EXPECT_LT(with.visited_nodes * 4, without.visited_nodes) << with.visited_nodes << " vs " << without.visited_nodes;
+}
+
+// The coil's faces are about square: the strip descends towards the guide's path (2026-12-05: 0.76x
+// the flips, 0.998x the length).
+TEST(CoarseGuide, LongPathsFollowItNeverShorterThanExactAndWithFewerFlips) {
+  expect_guided_paths_follow(coil(), testing::thinned_tube(kAlong, kAround, false, 4, 2), false, true, 1e-3);
+}
+
+// The knotted tube's are about 9:1: the strip walks the guide's path. (No exact distances here: on
+// faces this thin the reference's are not to be trusted, some locally shortest paths come out
+// shorter; and where the guide, six vertices round, takes the other way round the tube, the path is
+// longer, as in one pair of these: in total a little longer than without.)
+TEST(CoarseGuide, OnLongThinFacesTheStripWalksThePath) {
+  expect_guided_paths_follow(knot(), testing::thinned_tube(1200, 12, true, 4, 2), true, false, 0.01);
 }
 
 // Ends a few faces apart: no guide (the greedy search finds the way at once), the same paths as

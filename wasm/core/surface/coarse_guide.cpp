@@ -3,6 +3,7 @@
 #include "surface/geodesic.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -70,6 +71,22 @@ CoarseGuide::CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> c
   // tube's 1.02x; curves -0.09%, -0.49% and -0.13% in total length).
   own.dual_heuristic_weight = 1, own.landmark_weight = 1;
   solver_ = std::make_unique<GeodesicSolver>(coarse_, own);
+  // Long thin faces: the median of (longest edge / shortest edge) over up to 4096 faces.
+  std::vector<double> aspect;
+  const size_t nf = fine_.triangles.size(), step = std::max<size_t>(1, nf / 4096);
+  for (size_t f = 0; f < nf; f += step) {
+    const auto& t = fine_.triangles[f];
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double e = (fine_.positions[t[(k + 1) % 3]] - fine_.positions[t[k]]).norm();
+      lo = std::min(lo, e), hi = std::max(hi, e);
+    }
+    if (lo > 0) aspect.push_back(hi / lo);
+  }
+  if (!aspect.empty()) {
+    std::nth_element(aspect.begin(), aspect.begin() + aspect.size() / 2, aspect.end());
+    walks_ = options.guide_walk_aspect > 0 && aspect[aspect.size() / 2] > options.guide_walk_aspect;
+  }
 }
 
 CoarseGuide::~CoarseGuide() = default;
@@ -110,25 +127,66 @@ bool CoarseGuide::coarse_path(const MeshPoint& a, const MeshPoint& b, int min_fa
   return true;
 }
 
+void CoarseGuide::descend_to(const Vec3& x, const std::vector<Eigen::Vector3f>& centroids,
+                             std::vector<int>& strip) const {
+  const Eigen::Vector3f target = (x - fine_.centre).cast<float>();
+  for (int f = strip.back();;) {
+    int next = -1;
+    float d = (centroids[f] - target).squaredNorm();
+    for (int g : fine_.adjacency[f])
+      if (g >= 0 && (centroids[g] - target).squaredNorm() < d) d = (centroids[g] - target).squaredNorm(), next = g;
+    if (next < 0) return;
+    strip.push_back(f = next);
+  }
+}
+
+bool CoarseGuide::walk_to(const Vec3& x, Vec3& at, std::vector<int>& strip) const {
+  // Barycentric weights of y's projection on face f's plane.
+  auto weights_in = [&](int f, const Vec3& y) {
+    const auto& t = fine_.triangles[f];
+    const Vec3 &p0 = fine_.positions[t[0]], e1 = fine_.positions[t[1]] - p0, e2 = fine_.positions[t[2]] - p0;
+    const Vec3 d = y - p0;
+    const double a = e1.dot(e1), b = e1.dot(e2), c = e2.dot(e2), u = d.dot(e1), v = d.dot(e2), det = a * c - b * b;
+    if (!(std::abs(det) > 0)) return Eigen::Vector3d(1.0 / 3, 1.0 / 3, 1.0 / 3);
+    const double w1 = (c * u - b * v) / det, w2 = (a * v - b * u) / det;
+    return Eigen::Vector3d(1 - w1 - w2, w1, w2);
+  };
+  int f = strip.back();
+  for (size_t steps = 0; steps < kMaxWalk; ++steps) {
+    const Eigen::Vector3d w0 = weights_in(f, at), w1 = weights_in(f, x);
+    if (w1.minCoeff() >= -1e-12) {
+      at = x;
+      return true;
+    }
+    // Out across the edge opposite the corner whose weight turns negative first along the segment.
+    int exit = -1;
+    double first = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i)
+      if (w1[i] < 0) {
+        const double t = std::max(0.0, w0[i]) / (std::max(0.0, w0[i]) - w1[i]);
+        if (t < first) first = t, exit = i;
+      }
+    const int g = fine_.adjacency[f][(exit + 1) % 3];
+    if (g < 0 || (strip.size() > 1 && g == strip[strip.size() - 2])) return false;  // a boundary; turning back
+    const Eigen::Vector3d w = w0 + first * (w1 - w0);
+    const auto& t = fine_.triangles[f];
+    at = w[0] * fine_.positions[t[0]] + w[1] * fine_.positions[t[1]] + w[2] * fine_.positions[t[2]];
+    strip.push_back(f = g);
+  }
+  return false;
+}
+
 bool CoarseGuide::strip(const MeshPoint& a, const MeshPoint& b, int min_faces, DualSearch& search,
                         std::vector<int>& strip, PathStats* stats) {
   if (!coarse_path(a, b, min_faces)) return false;
   const std::vector<Eigen::Vector3f>& centroids = search.centroids();
   strip.assign(1, a.face);
-  // Face by face to the neighbour whose centroid is nearer x, while one is.
-  auto descend_to = [&](const Vec3& x) {
-    const Eigen::Vector3f target = (x - fine_.centre).cast<float>();
-    for (int f = strip.back();;) {
-      int next = -1;
-      float d = (centroids[f] - target).squaredNorm();
-      for (int g : fine_.adjacency[f])
-        if (g >= 0 && (centroids[g] - target).squaredNorm() < d) d = (centroids[g] - target).squaredNorm(), next = g;
-      if (next < 0) return;
-      strip.push_back(f = next);
-    }
+  Vec3 at = eval_position(fine_, a);
+  auto follow = [&](const Vec3& x) {
+    if (!walks_ || !walk_to(x, at, strip)) descend_to(x, centroids, strip), at = x;
   };
-  for (size_t k = 1; k + 1 < along_.size(); ++k) descend_to(along_[k]);
-  descend_to(eval_position(fine_, b));
+  for (size_t k = 1; k + 1 < along_.size(); ++k) follow(along_[k]);
+  follow(eval_position(fine_, b));
   if (strip.back() != b.face) {
     if (!search.initial_strip(MeshPoint{strip.back(), Vec2(1.0 / 3, 1.0 / 3)}, b, tail_, stats, SearchGraph::kDual))
       return false;

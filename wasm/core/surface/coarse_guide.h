@@ -12,8 +12,10 @@
 //   2. the locally shortest path between those on the coarse mesh (its own GeodesicSolver, kDual);
 //   3. on the fine mesh from a's face, face by face to the neighbour whose centroid is nearer each of
 //      the coarse path's edge crossings in turn, then b (a descent in space, which at coarse-edge
-//      steps does not cross between the turns of a coil), and the greedy search on from where the
-//      descent stops if that is not b's face; loops removed.
+//      steps does not cross between the turns of a coil) — or, on a mesh of long thin faces, where
+//      the nearest centroid misleads, across the faces each segment between them crosses (a walk in
+//      the faces' planes, the descent where it meets a boundary or turns back) — and the greedy
+//      search on from where that stops if it is not b's face; loops removed.
 // The strip is then straightened as any other (straighten.h).
 #pragma once
 
@@ -44,6 +46,10 @@ class CoarseGuide {
 
   // ---- Queries ----
   const TriMesh& coarse() const { return coarse_; }
+  // Whether step 3 walks the coarse path's segments rather than descends towards its points: on a
+  // mesh whose faces are long and thin (the median longest / shortest edge over
+  // ShortestPathOptions::guide_walk_aspect), where the nearest centroid is a poor guide.
+  bool walks() const { return walks_; }
   // Bytes held: the coarse mesh, its solver, the fine-to-coarse vertex table.
   size_t bytes() const;
 
@@ -60,6 +66,13 @@ class CoarseGuide {
   // The coarse mesh vertex nearest p on the fine mesh (fewest faces away, then nearest in space), -1
   // when none lies within a bounded walk.
   int nearest_kept(const MeshPoint& p);
+  // Step 3, from strip.back() towards x: face by face to the neighbour whose centroid (`centroids`,
+  // the fine search's) is nearer x, while one is.
+  void descend_to(const Vec3& x, const std::vector<Eigen::Vector3f>& centroids, std::vector<int>& strip) const;
+  // Step 3 where faces are long and thin (walks()): across the faces the segment from `at` (on
+  // strip.back()) to x crosses, in each face's plane, to the face under x (`at` becomes x); false
+  // where the segment meets a boundary or turns back (`at` then on the face reached).
+  bool walk_to(const Vec3& x, Vec3& at, std::vector<int>& strip) const;
   // Steps 1-2: the coarse path from a to b in along_ (its points in space); false when it is shorter
   // than min_faces or none.
   bool coarse_path(const MeshPoint& a, const MeshPoint& b, int min_faces);
@@ -72,6 +85,7 @@ class CoarseGuide {
   std::vector<Vec3> along_;  // the coarse path's points
   std::vector<int> queue_;   // nearest_kept's walk
   std::vector<int> tail_;    // the search after the descent
+  bool walks_ = false;       // walks()
 };
 
 }  // namespace splinekit::surface

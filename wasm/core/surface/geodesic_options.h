@@ -58,6 +58,13 @@ struct ShortestPathOptions {
   // of the tube or limb and the straightening sweeps the band between (BENCHMARKS.md, "Surface at
   // scale", Coarse guide). Only with a guide (GeodesicSolver::set_coarse_guide).
   int coarse_guide_faces = 24;
+  // The strip follows the guide's path by walking its segments across the faces (CoarseGuide::walks)
+  // where the median face's longest edge is more than this many times its shortest (0: never), else
+  // by descending towards its points face by face: on long thin faces the nearest centroid misleads
+  // (2026-12-05, 30 random curves, native: the knotted tube's faces, about 6:1, 0.73x the time
+  // walking; the folded body's, about 18:1, 0.96x; on the coil, about 1.3:1, walking took 1.10x,
+  // spot_loop2_369k 1.07x: a strip one face wide leaves the bends to move a row a pass).
+  double guide_walk_aspect = 3;
   // Landmark lower bounds (landmarks.h) in components of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
   // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
