@@ -19,6 +19,7 @@ function printMesh(file: string, m: MeshInfo): void {
     `repairs: welded ${m.weldedVertices}, unused ${m.unreferencedVertices}, degenerate ${m.degenerateFaces}, repeated ${m.duplicateFaces}, ` +
       `non-manifold ${m.nonManifoldEdges} edges / ${m.nonManifoldVertices} vertices, flipped ${m.flippedFaces}`,
   );
+  console.log(`search: ${m.landmarks} landmarks, ${m.guideFaces > 0 ? `a coarse guide of ${m.guideFaces} triangles` : 'no coarse guide'}, ${(m.bytes / 2 ** 20).toFixed(1)} MB`);
   console.log(`warnings: ${m.warnings.length}`);
   for (const w of m.warnings) console.log(`  - ${w}`);
 }

@@ -4,12 +4,12 @@
  * the file's order; outputs use the same convention.
  */
 import { basename } from 'node:path';
-import { DEFAULT_MAX_MESH_BYTES, DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SplinekitError, SurfaceMesh, randomMeshPoints, traceBezier, type MeshPoint, type MeshPointLike, type TraceOptions } from '../index.js';
+import { DEFAULT_MAX_MESH_BYTES, DEFAULT_TRACE_LEVELS, DEFAULT_TRACE_SCHEME, SplinekitError, SurfaceMesh, randomMeshPoints, traceBezier, type MeshPoint, type MeshPointLike, type SurfaceMeshOptions, type TraceOptions } from '../index.js';
 import { meshHandles } from '../surface/mesh-handle.js';
 import { UsageError, parse, readInput, readJSON, writeJSON, type Command } from './common.js';
 
-export async function loadMesh(path: string): Promise<SurfaceMesh> {
-  return SurfaceMesh.load(readInput(path, DEFAULT_MAX_MESH_BYTES), basename(path));
+export async function loadMesh(path: string, options: SurfaceMeshOptions = {}): Promise<SurfaceMesh> {
+  return SurfaceMesh.load(readInput(path, DEFAULT_MAX_MESH_BYTES), basename(path), options);
 }
 
 /** A mesh point from JSON: a vertex index or {"face":f,"uv":[u,v]}; checked against the mesh. */
@@ -88,11 +88,13 @@ curves with control points uniform over the surface's area (seed S, default 1; o
 several parts, a polygon whose points fall on separate parts is drawn again). A curve cannot
 cross between parts: given ones that would are refused. --json writes
 {"curves":[{"points":[{"face":f,"uv":[u,v],"xyz":[x,y,z]},...]}],"stats":{"total_ms":..,
-"per_curve_ms":[...],"per_curve":[{"searchedPaths":..,"seededPaths":..,"visitedNodes":..,
+"per_curve_ms":[...],"per_curve":[{"searchedPaths":..,"guided":..,"seededPaths":..,"visitedNodes":..,
 "stripFaces":..,"passes":..,"flips":..},...],"redrawn":n}}: the whole polyline on the surface, every
-edge crossing included; per_curve is each curve's work (shortest paths searched and straightened
-through known ones, graph nodes expanded, strip faces straightened, passes, flips); redrawn counts
-the random polygons drawn again.`;
+edge crossing included; per_curve is each curve's work (shortest paths searched, of those the ones
+found along the coarse guide, and straightened through known ones, graph nodes expanded, strip faces
+straightened, passes, flips); redrawn counts the random polygons drawn again. A mesh of 65,536
+triangles or more gets a coarse guide (itself simplified to a sixteenth) that finds long paths' way
+first; --no-guide leaves it out.`;
 
 function integerOption(value: string | undefined, name: string, min: number, max: number): number | undefined {
   if (value === undefined) return undefined;
@@ -143,6 +145,7 @@ export const trace: Command = {
         levels: { type: 'string' },
         adaptive: { type: 'string' },
         json: { type: 'string' },
+        'no-guide': { type: 'boolean' },
       },
     });
     if (positionals.length !== 1) throw new UsageError(`expected one mesh file\n${traceUsage}`);
@@ -164,15 +167,15 @@ export const trace: Command = {
       if (!json || !Array.isArray(json.curves)) throw new SplinekitError('invalid-input', `${basename(values.curves)}: expected {"curves":[[p0,p1,p2,p3],...]}`);
       curvesJSON = json.curves;
     }
-    const mesh = await loadMesh(positionals[0]);
+    const mesh = await loadMesh(positionals[0], values['no-guide'] ? { guide: false } : {});
     try {
       const perCurve: number[] = [];
       const work: Record<string, number>[] = [];
       const curves: { points: { face: number; uv: [number, number]; xyz: number[] }[] }[] = [];
       const add = (traced: ReturnType<typeof traceBezier>) => {
         perCurve.push(traced.ms);
-        const { searchedPaths, seededPaths, visitedNodes, stripFaces, passes, flips } = traced.counters;
-        work.push({ searchedPaths, seededPaths, visitedNodes, stripFaces, passes, flips });
+        const { searchedPaths, guided, seededPaths, visitedNodes, stripFaces, passes, flips } = traced.counters;
+        work.push({ searchedPaths, guided, seededPaths, visitedNodes, stripFaces, passes, flips });
         curves.push({ points: traced.points.map((p, i) => ({ face: p.face, uv: p.uv, xyz: [traced.xyz[3 * i], traced.xyz[3 * i + 1], traced.xyz[3 * i + 2]] })) });
       };
       let redrawn = 0;

@@ -7,7 +7,7 @@ import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, test } from 'vitest';
-import { cli, readShared, sharedData } from './helpers.js';
+import { cli, readShared, sharedData, uShape } from './helpers.js';
 import { mulberry32 as random } from '../../src/core/random.js';
 
 const dir = mkdtempSync(join(tmpdir(), 'splinekit-surface-'));
@@ -272,7 +272,7 @@ interface GeodesicJSON {
 }
 interface TraceJSON {
   curves: { points: { face: number; uv: [number, number]; xyz: Vec3 }[] }[];
-  stats: { total_ms: number; per_curve_ms: number[]; per_curve: { searchedPaths: number; seededPaths: number; visitedNodes: number; stripFaces: number; passes: number; flips: number }[]; redrawn: number };
+  stats: { total_ms: number; per_curve_ms: number[]; per_curve: { searchedPaths: number; guided: number; seededPaths: number; visitedNodes: number; stripFaces: number; passes: number; flips: number }[]; redrawn: number };
 }
 
 let runs = 0;
@@ -589,6 +589,27 @@ describe('splinekit trace', () => {
       const first = curve.points[0], last = curve.points.at(-1)!;
       checkTraced(mesh, [first, first, first, last], curve, 1e-9);
     }
+  });
+
+  test('a mesh of 65,536 triangles or more: long sides follow the coarse guide (--no-guide leaves it out), info names it', () => {
+    // The flat U of helpers.ts, 260 × 128 cells (66,080 triangles), as OBJ; a curve with P0 = P1 in one
+    // arm and P2 = P3 in the other is the geodesic round the slot's end, of a closed-form length.
+    const u = uShape(260, 128, 129, 8);
+    const lines: string[] = [];
+    for (let i = 0; i < u.positions.length; i += 3) lines.push(`v ${u.positions[i]} ${u.positions[i + 1]} ${u.positions[i + 2]}`);
+    for (let i = 0; i < u.triangles.length; i += 3) lines.push(`f ${u.triangles[i] + 1} ${u.triangles[i + 1] + 1} ${u.triangles[i + 2] + 1}`);
+    const file = write('u.obj', `${lines.join('\n')}\n`);
+    const a = u.pointAt(60.3, 120.2), b = u.pointAt(200.6, 115.1);
+    const curves = write('u-curves.json', { curves: [[a, a, b, b]] });
+    const expected = Math.hypot(60.3 - 129, 120.2 - 8) + 2 + Math.hypot(200.6 - 131, 115.1 - 8);
+    for (const [flags, guided] of [[[], true], [['--no-guide'], false]] as const) {
+      const out = run<TraceJSON>(['trace', file, '--curves', curves, ...flags]);
+      expect(out.stats.per_curve[0].guided > 0, flags.join(' ')).toBe(guided);
+      expect(Math.abs(polylineLength(out.curves[0].points.map((p) => p.xyz)) - expected)).toBeLessThan(1e-9 * expected);
+    }
+    const info = cli(['info', file]);
+    expect(info.code).toBe(0);
+    expect(info.stdout).toMatch(/search: 4 landmarks, a coarse guide of \d+ triangles, \d+\.\d MB/);
   });
 
   test('on a mesh of two parts, --random draws each polygon on one part, and a given curve across them is refused', () => {
