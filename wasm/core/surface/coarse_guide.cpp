@@ -71,6 +71,9 @@ CoarseGuide::CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> c
   // tube's 1.02x; curves -0.09%, -0.49% and -0.13% in total length).
   own.dual_heuristic_weight = 1, own.landmark_weight = 1;
   solver_ = std::make_unique<GeodesicSolver>(coarse_, own);
+  for (const auto& t : coarse_.triangles)
+    for (int k = 0; k < 3; ++k) mean_edge_ += (coarse_.positions[t[(k + 1) % 3]] - coarse_.positions[t[k]]).norm();
+  mean_edge_ /= 3.0 * std::max<size_t>(1, coarse_.triangles.size());
   // Long thin faces: the median of (longest edge / shortest edge) over up to 4096 faces.
   std::vector<double> aspect;
   const size_t nf = fine_.triangles.size(), step = std::max<size_t>(1, nf / 4096);

@@ -46,6 +46,8 @@ class CoarseGuide {
 
   // ---- Queries ----
   const TriMesh& coarse() const { return coarse_; }
+  // The coarse mesh's mean edge length.
+  double mean_edge() const { return mean_edge_; }
   // Whether step 3 walks the coarse path's segments rather than descends towards its points: on a
   // mesh whose faces are long and thin (the median longest / shortest edge over
   // ShortestPathOptions::guide_walk_aspect), where the nearest centroid is a poor guide.
@@ -86,6 +88,7 @@ class CoarseGuide {
   std::vector<int> queue_;   // nearest_kept's walk
   std::vector<int> tail_;    // the search after the descent
   bool walks_ = false;       // walks()
+  double mean_edge_ = 0;     // mean_edge()
 };
 
 }  // namespace splinekit::surface

@@ -15,11 +15,6 @@ MeshStatus GeodesicSolver::set_coarse_guide(const int* triangles, int count, std
   std::unique_ptr<CoarseGuide> guide;
   if (CoarseGuide::build(mesh_, triangles, count, straightener_.options, guide, error) != MeshStatus::kOk)
     return MeshStatus::kInvalidInput;
-  const TriMesh& coarse = guide->coarse();
-  double edges = 0;
-  for (const auto& t : coarse.triangles)
-    for (int k = 0; k < 3; ++k) edges += (coarse.positions[t[(k + 1) % 3]] - coarse.positions[t[k]]).norm();
-  guide_min_length_ = straightener_.options.coarse_guide_faces * edges / (3.0 * coarse.triangles.size());
   guide_ = std::move(guide);
   return MeshStatus::kOk;
 }
@@ -76,7 +71,7 @@ bool GeodesicSolver::guided_strip(const MeshPoint& a, const MeshPoint& b, PathSt
   // greedy search finds at once (the guide's would cost its search and the walks to kept vertices).
   const double apart = std::max((eval_position(mesh_, a) - eval_position(mesh_, b)).norm(),
                                 search_.landmarks().bound_between(a.face, b.face));
-  if (apart < guide_min_length_ || !guide_->strip(a, b, faces, search_, strip_, stats)) return false;
+  if (apart < faces * guide_->mean_edge() || !guide_->strip(a, b, faces, search_, strip_, stats)) return false;
   search_length_ = std::numeric_limits<double>::quiet_NaN();
   if (stats) ++stats->guided;
   return true;

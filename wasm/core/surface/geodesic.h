@@ -89,8 +89,9 @@ class GeodesicSolver {
   // descent ends too far from the other end (landmark_descent_gap) or the search on finds no way.
   bool descent_strip(const MeshPoint& a, const MeshPoint& b, double shortest, std::vector<int>& strip,
                      PathStats* stats);
-  // The coarse guide's strip from a to b in strip_ (its ends at least guide_min_length_ apart by the
-  // bounds, its coarse path at least coarse_guide_faces faces); false without a guide or when not so.
+  // The coarse guide's strip from a to b in strip_ (its ends at least coarse_guide_faces of the guide's
+  // mean edges apart by the bounds, its coarse path at least that many faces); false without a guide
+  // or when not so.
   bool guided_strip(const MeshPoint& a, const MeshPoint& b, PathStats* stats);
   // The length of the funnel path from a to b inside `strip` (phase (ii) alone).
   double funnel_length(const MeshPoint& a, const MeshPoint& b, const std::vector<int>& strip);
@@ -98,7 +99,6 @@ class GeodesicSolver {
   const TriMesh& mesh_;
   DualSearch search_;
   std::unique_ptr<CoarseGuide> guide_;
-  double guide_min_length_ = 0;  // coarse_guide_faces of the guide's mean edge lengths
   Straightener straightener_;
   std::vector<int> strip_;    // the strip between the phases
   std::vector<int> back_;     // a long kDual strip's other candidate (searched from b to a, or the descent's)
