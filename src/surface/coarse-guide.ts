@@ -6,7 +6,7 @@
  * under a quadric error bound: the guide's vertices are mesh vertices, and its surface keeps the
  * mesh's topology), which the core needs: it walks from a point to the nearest kept vertex.
  */
-import { MeshoptSimplifier } from 'meshoptimizer/simplifier';
+import { MeshoptSimplifier, type SimplifierFlags } from 'meshoptimizer/simplifier';
 
 /** Meshes of at least this many faces get a guide unless SurfaceMeshOptions.guide says otherwise. */
 export const GUIDE_MIN_FACES = 65536;
@@ -23,6 +23,16 @@ export const GUIDE_RATIO = 1 / 16;
  * rather than move the surface farther (a guide a quarter of the mesh or larger is not built).
  */
 const GUIDE_ERROR = 0.01;
+
+/**
+ * The simplifier's flags: 'RegularizeLight' keeps the guide's triangles near regular. The guide's
+ * paths come from a search over its faces' centroids, which on slivers zigzags and takes the long
+ * way: the plain simplification of the benchmark's folded body (its faces 14:1) made slivers up to
+ * 55:1 (p99), and guided paths there often followed another limb before the straightening found the
+ * short way (2026-12-05, native, 40 random curves: the three sides' straightening 713 → 274 ms,
+ * the curves 950 → 455 ms; the coil and the knotted tube within their run-to-run noise, ±10%).
+ */
+const GUIDE_FLAGS: SimplifierFlags[] = ['RegularizeLight'];
 
 /** Loads the simplifier's WebAssembly (init() awaits it with the core's). */
 export function loadSimplifier(): Promise<void> {
@@ -46,6 +56,6 @@ export function guideTriangles(positions: ArrayLike<number>, triangles: ArrayLik
   }
   const local = new Float32Array(positions.length);
   for (let i = 0; i < positions.length; i++) local[i] = positions[i] - (lo[i % 3] + hi[i % 3]) / 2;
-  const [kept] = MeshoptSimplifier.simplify(Uint32Array.from(triangles), local, 3, 3 * Math.floor(faces * GUIDE_RATIO), GUIDE_ERROR);
+  const [kept] = MeshoptSimplifier.simplify(Uint32Array.from(triangles), local, 3, 3 * Math.floor(faces * GUIDE_RATIO), GUIDE_ERROR, GUIDE_FLAGS);
   return kept.length > 0 && kept.length / 3 <= faces / 4 ? kept : null;
 }
