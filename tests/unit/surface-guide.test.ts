@@ -1,10 +1,13 @@
 // The coarse guide of long paths (SurfaceMeshOptions.guide; src/surface/coarse-guide.ts,
 // wasm/core/surface/coarse_guide.h) through the package: built by default on large meshes, what the
 // mesh reports, the memory it takes, deferred with the search, and curves on a flat U (points close in
-// space, far apart on the surface) whose long sides follow it and keep their closed-form lengths.
+// space, far apart on the surface) whose long sides follow it and keep their closed-form lengths; and
+// that the guide of a mesh of long thin faces has near-regular triangles.
 import { beforeAll, describe, expect, test } from 'vitest';
 import { uShape } from './helpers.js';
+import { MeshoptSimplifier } from 'meshoptimizer/simplifier';
 import { DEFAULT_LANDMARKS, GUIDED_LANDMARKS, GUIDE_MIN_FACES, GUIDE_RATIO, SurfaceMesh, init, traceBezier } from '../../src/index.js';
+import { guideTriangles } from '../../src/surface/coarse-guide.js';
 
 beforeAll(async () => {
   await init();
@@ -145,4 +148,51 @@ describe('coarse guide', () => {
       }
     }
   });
+});
+
+/** A closed tube of `around` × `along` quads split in two, its faces `stretch` times longer around than along. */
+function thinFacedTube(around: number, along: number, stretch: number): { positions: Float64Array; triangles: Uint32Array } {
+  const r = 1, step = (2 * Math.PI * r) / around / stretch;
+  const positions = new Float64Array(3 * around * (along + 1));
+  for (let j = 0; j <= along; j++)
+    for (let i = 0; i < around; i++) {
+      const a = (2 * Math.PI * i) / around, v = j * around + i;
+      positions.set([r * Math.cos(a), r * Math.sin(a), j * step], 3 * v);
+    }
+  const triangles = new Uint32Array(6 * around * along);
+  for (let j = 0, t = 0; j < along; j++)
+    for (let i = 0; i < around; i++) {
+      const a = j * around + i, b = j * around + ((i + 1) % around), c = a + around, d = b + around;
+      triangles.set([a, b, d, a, d, c], t);
+      t += 6;
+    }
+  return { positions, triangles };
+}
+
+/** The 99th percentile over faces of longest edge / shortest edge. */
+function aspectP99(positions: ArrayLike<number>, triangles: ArrayLike<number>): number {
+  const ratios: number[] = [];
+  const edge = (u: number, v: number) => Math.hypot(positions[3 * u] - positions[3 * v], positions[3 * u + 1] - positions[3 * v + 1], positions[3 * u + 2] - positions[3 * v + 2]);
+  for (let t = 0; t < triangles.length; t += 3) {
+    const e = [edge(triangles[t], triangles[t + 1]), edge(triangles[t + 1], triangles[t + 2]), edge(triangles[t + 2], triangles[t])];
+    ratios.push(Math.max(...e) / Math.min(...e));
+  }
+  ratios.sort((x, y) => x - y);
+  return ratios[Math.floor(0.99 * (ratios.length - 1))];
+}
+
+test('the guide of a mesh of long thin faces has near-regular triangles, where plain simplification leaves slivers', () => {
+  // (the guide's path is a search over its faces' centroids, which zigzags across slivers)
+  const { positions, triangles } = thinFacedTube(64, 1200, 14);
+  expect(aspectP99(positions, triangles)).toBeGreaterThan(13);
+  const guide = guideTriangles(positions, triangles);
+  expect(guide).not.toBeNull();
+  const faces = triangles.length / 3;
+  expect(guide!.length / 3).toBeLessThanOrEqual(GUIDE_RATIO * faces);
+  expect(guide!.length / 3).toBeGreaterThan(0.5 * GUIDE_RATIO * faces);
+  for (const v of guide!) expect(v).toBeLessThan(positions.length / 3);
+  const [plain] = MeshoptSimplifier.simplify(triangles, Float32Array.from(positions), 3, 3 * Math.floor(faces * GUIDE_RATIO), 0.01);
+  const regular = aspectP99(positions, guide!), sliver = aspectP99(positions, plain);
+  expect(regular).toBeLessThan(5);
+  expect(sliver).toBeGreaterThan(2 * regular);
 });

@@ -121,6 +121,18 @@ TEST(CoarseGuide, ShortPathsAreLeftToTheSearch) {
   EXPECT_EQ(stats.guided, 0);
 }
 
+// A guide far below the mesh's landmark threshold still gets the mesh's landmarks: its exact search
+// would flood the guide without them (the coil's guide here: 3,200 faces).
+TEST(CoarseGuide, SmallGuidesGetLandmarks) {
+  GeodesicSolver guided(coil());
+  set_guide(guided);
+  const CoarseGuide* guide = guided.coarse_guide();
+  ASSERT_NE(guide, nullptr);
+  ASSERT_LT(static_cast<int>(guide->coarse().triangles.size()), ShortestPathOptions{}.landmark_min_faces);
+  EXPECT_EQ(guide->landmarks().count(), ShortestPathOptions{}.landmarks);
+  EXPECT_GT(guide->bytes(), guide->landmarks().bytes());
+}
+
 // A bad decimation is refused, naming what is wrong, and the guide set before stays.
 TEST(CoarseGuide, RefusesBadTrianglesNamingThemAndKeepsTheEarlierGuide) {
   const TriMesh& mesh = coil();

@@ -99,6 +99,8 @@ CoarseGuide::CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> c
 
 CoarseGuide::~CoarseGuide() = default;
 
+const Landmarks& CoarseGuide::landmarks() const { return solver_->landmarks(); }
+
 size_t CoarseGuide::bytes() const {
   return mesh_bytes(coarse_) + solver_->bytes() + coarse_of_fine_.capacity() * sizeof(int);
 }

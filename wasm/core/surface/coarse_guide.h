@@ -46,6 +46,8 @@ class CoarseGuide {
 
   // ---- Queries ----
   const TriMesh& coarse() const { return coarse_; }
+  // The landmarks of the guide's own search (on its components of 1024 faces or more).
+  const Landmarks& landmarks() const;
   // The coarse mesh's mean edge length.
   double mean_edge() const { return mean_edge_; }
   // Whether step 3 walks the coarse path's segments rather than descends towards its points: on a
