@@ -10,7 +10,7 @@ import { SplinekitError, checkStatus } from '../core/errors.js';
 import type { SurfaceMeshHandle } from '../core/splinekit-core.mjs';
 import { parseMesh, type MeshParseOptions } from './mesh-io.js';
 import { GUIDE_MIN_FACES, guideTriangles } from './coarse-guide.js';
-import { meshHandles, pendingSearch, readMeshPoints, writeMeshPoints } from './mesh-handle.js';
+import { meshHandles, pendingSearch, readMeshPoints, searchHandle, writeMeshPoints } from './mesh-handle.js';
 import { meshPointPosition, type MeshPoint, type MeshPointLike } from './mesh-point.js';
 
 export type { MeshPoint, MeshPointLike } from './mesh-point.js';
@@ -227,8 +227,7 @@ export class SurfaceMesh {
 
   /** Builds the search structures (and the coarse guide) now if SurfaceMeshOptions.deferSearch left them; returns info. */
   buildSearch(): MeshInfo {
-    const handle = meshHandles.get(this);
-    pendingSearch.get(this)?.();
+    const handle = searchHandle(this);
     handle.buildSearch();
     this.readSearch(handle);
     return this._info;
