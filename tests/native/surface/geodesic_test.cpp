@@ -298,6 +298,48 @@ TEST(SearchGraph, ALongEdgeCostsItsNodesNotAnOffsetPerEdge) {
   EXPECT_LT(stretched_per_triangle - per_triangle, 0.25) << per_triangle << " vs " << stretched_per_triangle;
 }
 
+TEST(SearchGraph, WeighsTheGreedySearchAboveTheStretchOfLongThinFaces) {
+  // A cylinder of 600 x 30 quads (0.0105 around, 0.333 along: 32:1), split in two: around it the
+  // dual graph zigzags between centroids a third and two thirds up each quad, per quad width w the
+  // hops sqrt((w/3)^2 + (h/3)^2) + sqrt((2w/3)^2 + (h/3)^2) (the worst direction); a jittered grid
+  // of near-regular faces stays below 2.
+  const int around = 600, up = 30;
+  const TriMesh thin = testing::build(testing::cylinder(around, up, 1, 10));
+  const double w = 2 * std::sin(kPi / around), h = 10.0 / up;
+  const double zigzag = (std::hypot(w / 3, h / 3) + std::hypot(2 * w / 3, h / 3)) / w;
+  ShortestPathOptions options;
+  options.landmarks = 0;
+  const DualSearch search(thin, options);
+  EXPECT_GT(search.dual_stretch(), 0.5 * zigzag) << zigzag;
+  EXPECT_LT(search.dual_stretch(), 1.05 * zigzag) << zigzag;
+  EXPECT_DOUBLE_EQ(search.dual_weight(), 1.25 * search.dual_stretch());
+  const TriMesh grid = testing::build(testing::planar_grid(80));
+  const DualSearch regular(grid, options);
+  EXPECT_GT(regular.dual_stretch(), 1.0);
+  EXPECT_LT(regular.dual_stretch(), 2.0);
+  EXPECT_DOUBLE_EQ(regular.dual_weight(), options.dual_heuristic_weight);
+
+  // Around a quarter of the cylinder at mid-height: at the stretch's weight the greedy search goes
+  // to the target; at weight 3 (below the stretch) it expands the faces within reach.
+  const MeshPoint a = vertex_at(thin, Vec3(1, 0, 5)), b = vertex_at(thin, Vec3(0, 1, 5));
+  ShortestPathOptions plain = options;
+  plain.dual_stretch_weight = 0;
+  GeodesicSolver weighed(thin, options), flooded(thin, plain);
+  std::vector<int> strip, flooded_strip;
+  PathStats stats, flooded_stats;
+  ASSERT_TRUE(weighed.initial_strip(a, b, strip, &stats, SearchGraph::kDual));
+  ASSERT_TRUE(flooded.initial_strip(a, b, flooded_strip, &flooded_stats, SearchGraph::kDual));
+  EXPECT_LT(stats.visited_nodes, 4 * static_cast<int>(strip.size())) << strip.size();
+  EXPECT_GT(flooded_stats.visited_nodes, 10 * stats.visited_nodes) << stats.visited_nodes;
+  // Both straighten to the quarter circle's chord-polygon length (the geodesic around a cylinder).
+  GeodesicPath path, flooded_path;
+  weighed.shortest_path(a, b, path, nullptr, SearchGraph::kDual);
+  flooded.shortest_path(a, b, flooded_path, nullptr, SearchGraph::kDual);
+  const double arc = (around / 4) * w;
+  EXPECT_NEAR(path_length(thin, path), arc, 1e-9);
+  EXPECT_NEAR(path_length(thin, flooded_path), arc, 1e-9);
+}
+
 TEST(ShortestPath, IsTheStraightSegmentOnAPlane) {
   const TriMesh mesh = testing::build(testing::planar_grid(24));
   GeodesicSolver solver(mesh);

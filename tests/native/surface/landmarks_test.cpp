@@ -277,6 +277,7 @@ TEST(Landmarks, TheSearchFollowsThePathNotTheMesh) {
   without.landmarks = 0;
   // An admissible A* on both sides (weight 1), so the strips are comparable.
   with.dual_heuristic_weight = without.dual_heuristic_weight = with.landmark_weight = 1;
+  with.dual_stretch_weight = without.dual_stretch_weight = 0;
   GeodesicSolver a(mesh, with), b(mesh, without);
   ASSERT_EQ(a.landmarks().count(), 8);
   ASSERT_EQ(b.landmarks().count(), 0);

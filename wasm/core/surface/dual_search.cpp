@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <queue>
+#include <utility>
 
 namespace splinekit::surface {
 
@@ -29,7 +31,7 @@ void faces_of_point(const TriMesh& mesh, const MeshPoint& p, std::vector<int>& f
 
 DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
     : mesh_(mesh),
-      dual_heuristic_weight_(options.dual_heuristic_weight),
+      dual_weight_(options.dual_heuristic_weight),
       landmark_weight_(options.landmark_weight),
       refined_landmark_scale_(options.refined_landmark_scale) {
   const int nf = static_cast<int>(mesh.triangles.size());
@@ -72,6 +74,56 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
     centroids_[f] = local((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3);
   }
   landmarks_ = Landmarks(mesh, centroids_, options.landmarks, options.landmark_min_faces);
+  dual_stretch_ = measure_stretch();
+  dual_weight_ = std::max(dual_weight_, options.dual_stretch_weight * dual_stretch_);
+}
+
+double DualSearch::measure_stretch() {
+  constexpr int kSamples = 32;
+  constexpr float kReach = 20;
+  constexpr int kMaxFaces = 8192;  // per sample (a large face among small ones would reach too many)
+  const int nf = graph_.faces;
+  std::vector<float> ratios, dist;
+  std::vector<int> touched;
+  using Entry = std::pair<float, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (int i = 0; i < kSamples && nf > 0; ++i) {
+    const int s = static_cast<int>((int64_t{2} * i + 1) * nf / (2 * kSamples));
+    const auto& t = mesh_.triangles[s];
+    const float size = static_cast<float>(std::sqrt(
+        0.5 *
+        (mesh_.positions[t[1]] - mesh_.positions[t[0]]).cross(mesh_.positions[t[2]] - mesh_.positions[t[0]]).norm()));
+    if (!(size > 0)) continue;
+    const float reach = kReach * size;
+    // (face_slot_ numbers the faces touched, into dist; -1 again afterwards)
+    touched.assign(1, s), dist.assign(1, 0.f), face_slot_[s] = 0;
+    queue.push({0.f, s});
+    for (int expanded = 0; !queue.empty() && expanded < kMaxFaces; ++expanded) {
+      const auto [d, f] = queue.top();
+      queue.pop();
+      if (d > dist[face_slot_[f]]) continue;
+      const float straight = (centroids_[f] - centroids_[s]).norm();
+      if (straight > reach) continue;
+      if (straight > reach / 2) ratios.push_back(d / straight);
+      for (int g : mesh_.adjacency[f]) {
+        if (g < 0) continue;
+        int& slot = face_slot_[g];
+        if (slot < 0) {
+          slot = static_cast<int>(dist.size());
+          dist.push_back(std::numeric_limits<float>::infinity());
+          touched.push_back(g);
+        }
+        const float dg = d + (centroids_[g] - centroids_[f]).norm();
+        if (dg < dist[slot]) dist[slot] = dg, queue.push({dg, g});
+      }
+    }
+    for (int f : touched) face_slot_[f] = -1;
+    queue = {};
+  }
+  if (ratios.empty()) return 1;
+  const auto p90 = ratios.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(ratios.size() - 1));
+  std::nth_element(ratios.begin(), p90, ratios.end());
+  return *p90;
 }
 
 size_t DualSearch::bytes() const {
@@ -261,7 +313,7 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   const Vec3 pa = eval_position(mesh_, a) - origin_;
   const Vec3 pb = eval_position(mesh_, b) - origin_;
   const Eigen::Vector3f pbf = pb.cast<float>();
-  const double weight = dual ? dual_heuristic_weight_ : 1.0;
+  const double weight = dual ? dual_weight_ : 1.0;
   // The landmark term (landmarks.h): admissible on the dual graph; scaled down on the refined one.
   const double landmark_weight = dual ? landmark_weight_ : refined_landmark_scale_;
   // (A landmark term of weight 0, the refined search's default, is not computed at all.)
