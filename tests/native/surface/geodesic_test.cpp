@@ -428,6 +428,32 @@ TEST(ShortestPath, StraightensThroughKnownPaths) {
   EXPECT_FALSE(on_cube.straighten_through(pieces, path));
 }
 
+TEST(ShortestPath, StraighteningThroughKnownPathsStopsAtItsPassLimit) {
+  // Round a far corner on a grid, semi-stars only (no chords, no zippers): a vertex a pass.
+  const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
+  ShortestPathOptions options;
+  options.chords = options.slides = false;
+  GeodesicSolver solver(mesh, options);
+  auto at = [&](double x, double y) { return testing::point_at(mesh, Vec3(x, y, 0)); };
+  std::vector<GeodesicPath> pieces(2);
+  ASSERT_TRUE(solver.shortest_path(at(0.05, 0.5), at(0.5, 0.95), pieces[0]));
+  ASSERT_TRUE(solver.shortest_path(at(0.5, 0.95), at(0.95, 0.5), pieces[1]));
+  const double straight = 0.9;
+  GeodesicPath path;
+  PathStats stats;
+  ASSERT_TRUE(solver.straighten_through(pieces, path, &stats));
+  EXPECT_NEAR(path_length(mesh, path), straight, 1e-9);
+  ASSERT_GT(stats.passes, 4);
+  // Four passes do not get there: false, and the path so far is still longer.
+  PathStats limited;
+  EXPECT_FALSE(solver.straighten_through(pieces, path, &limited, 4));
+  EXPECT_EQ(limited.passes, 4);
+  EXPECT_GT(path_length(mesh, path), straight + 1e-6);
+  // Enough passes: true, the same path.
+  EXPECT_TRUE(solver.straighten_through(pieces, path, nullptr, stats.passes));
+  EXPECT_NEAR(path_length(mesh, path), straight, 1e-9);
+}
+
 // A strip that runs just under a row of collinear vertices while both ends lie just above it: the
 // funnel path runs along the row, bent where the strip crosses it. Flipping one vertex at a time
 // takes one flip per row vertex (19 here); the chain flip moves the strip across the whole

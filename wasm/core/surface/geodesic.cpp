@@ -147,7 +147,8 @@ bool walk_to(const TriMesh& mesh, const MeshPoint& p, int face, std::vector<int>
 
 }  // namespace
 
-bool GeodesicSolver::straighten_through(const std::vector<GeodesicPath>& pieces, GeodesicPath& path, PathStats* stats) {
+bool GeodesicSolver::straighten_through(const std::vector<GeodesicPath>& pieces, GeodesicPath& path, PathStats* stats,
+                                        int max_passes) {
   std::vector<int>& strip = strip_;
   strip.clear();
   for (const GeodesicPath& piece : pieces) {
@@ -160,8 +161,7 @@ bool GeodesicSolver::straighten_through(const std::vector<GeodesicPath>& pieces,
     strip.insert(strip.end(), piece.strip.begin() + 1, piece.strip.end());
   }
   remove_loops(strip, search_.face_marks());
-  straightener_.straighten(pieces.front().start, pieces.back().end, strip, path, stats);
-  return true;
+  return straightener_.straighten(pieces.front().start, pieces.back().end, strip, path, stats, max_passes);
 }
 
 }  // namespace splinekit::surface

@@ -79,9 +79,12 @@ class GeodesicSolver {
   }
   // Phase (i) replaced by known paths: `pieces` run from pieces.front().start to pieces.back().end,
   // each starting where the previous one ends; the strip goes through their faces (around the shared
-  // point when two pieces meet at a vertex) and is straightened. False, with `path` untouched, when
-  // two consecutive pieces do not meet.
-  bool straighten_through(const std::vector<GeodesicPath>& pieces, GeodesicPath& path, PathStats* stats = nullptr);
+  // point when two pieces meet at a vertex) and is straightened, in at most `max_passes` passes
+  // (ShortestPathOptions::max_passes when negative). False, with `path` untouched, when two
+  // consecutive pieces do not meet; false also when the passes ran out (`path` then not yet locally
+  // shortest).
+  bool straighten_through(const std::vector<GeodesicPath>& pieces, GeodesicPath& path, PathStats* stats = nullptr,
+                          int max_passes = -1);
 
  private:
   // The landmark descent's candidate strip from a to b (ShortestPathOptions::landmark_descent), given

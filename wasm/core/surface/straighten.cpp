@@ -22,24 +22,30 @@ Straightener::Straightener(const TriMesh& mesh, std::vector<int>& face_marks, co
 // The whole straightening
 // =================================================================================================
 
-void Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
-                              PathStats* stats) {
+bool Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
+                              PathStats* stats, int max_passes) {
   path.strip = strip;
   point_in_face(mesh_, a, strip.front(), path.start);
   point_in_face(mesh_, b, strip.back(), path.end);
   path.lerps.clear();
   path.arc.clear();
   if (stats) stats->strip_faces += static_cast<int>(strip.size());
-  if (strip.size() == 1) return;
+  if (strip.size() == 1) return true;
   begin(path.start, path.end, strip);
-  for (int passes = 0; options.straighten && passes < options.max_passes; ++passes) {
+  const int limit = max_passes < 0 ? options.max_passes : max_passes;
+  bool shortest = !options.straighten;
+  for (int passes = 0; options.straighten && passes < limit; ++passes) {
     if (stats) ++stats->passes;
-    if (!pass(stats)) break;
+    if (!pass(stats)) {
+      shortest = true;
+      break;
+    }
   }
   // Crossings of the final strip.
   crossings(path_.unfolded, path_.apices, path.lerps, path.arc);
   strip.assign(path_.strip.begin(), path_.strip.end());
   path.strip = path_.strip;
+  return shortest;
 }
 
 void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip) {
