@@ -21,6 +21,7 @@ export const SCALE_MESHES = [
   { name: 'coil', shape: 'coil', what: 'a tube coiled into 8 turns (helix radius 1, tube radius 0.12, pitch 0.3), 4000 × 48 quads split in two' },
   { name: 'knotted tube', shape: 'knot', what: 'a tube (radius 0.25) along a (2,3) torus knot, cut open and capped, 3000 × 24 quads split in two: its faces are six times longer around the tube than along it (the coil\'s are about square)' },
   { name: 'folded body', shape: 'folded', what: 'a body (radius 0.5) whose two limbs (radius 0.12) bend back and lie along it 0.04 away, 3000 × 64 quads and end caps, with 150 specks of debris as a scan has (single triangles 0.2% of the diagonal across, scattered in its box; the Stanford dragon has 150 beside its body)' },
+  { name: 'UV sphere', shape: 'uvsphere', what: 'a unit sphere of 2000 × 150 quads split in two, its poles fans of 2000 triangles, as a modeler exports one: faces 7:1 at the equator, thinner towards the poles (the dual graph\'s stretch 20; the other meshes 1.4-6.8)' },
 ];
 
 const OLR = { scheme: 'olr', levels: 5 };

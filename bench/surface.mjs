@@ -475,6 +475,18 @@ was set; the header says what each option does).
   average 0.3% longer on nefertiti, 0.2% shorter on spot_loop2_369k; 4 makes nefertiti's 1% longer).
   (Measured with the label-correcting SLF/LLL search of before 2026-12-02; the search is now a heap
   A*, see "Surface at scale".)
+- **dual_stretch_weight = 1.25** (2026-12-05): the kDual weight is at least 1.25 times the dual graph's
+  stretch, measured when the graph is built (32 short Dijkstra runs over the centroids, the 90th
+  percentile of graph over straight distance; a few ms). Across long thin faces the centroid path
+  zigzags (a 7:1 quad split in two: 4.5 times the straight way along its short side), and where that
+  passes the weight the greedy search expands everything within reach. Measured: nefertiti 1.52,
+  spot_loop2_369k 1.35, coil 1.74, Stanford dragon 1.41 (weight 3 kept); knotted tube 5.2 (weight 6.5,
+  0.965x the time), folded body 6.8 (8.5, 0.996x); a UV sphere of 2000 x 150 quads (7:1 at the equator,
+  not tuned on) 20.1: native, 40 random curves, 0.64x the time and 0.09x the nodes, the same curves
+  (wasm, 100 curves: median 20.1 -> 13.1 ms). A cylinder of 32:1 faces measures 21.5 against the
+  zigzag's closed form 21.25 (tests/native/surface/geodesic_test.cpp). Tried first: distances along
+  straight runs in the kDual search (the refined search's windows on face nodes): the sphere 0.92x
+  but the near-regular meshes 1.13-1.14x, and the dragon's curves 1.4% longer.
 - **dual_reverse_search_faces = 512** (2026-12-03): a kDual strip of 512 faces or more is searched again
   from the far end, and the one whose funnel path is shorter is straightened. The greedy search's A*
   term leads it down the landmarks' distance fields, so its strip depends on the end it starts from,

@@ -1,12 +1,13 @@
 // Native side of the "surface at scale" benchmark (bench/surface-scale.mjs runs it):
 //
-//   surface_scale_bench shape coil|knot|folded|noisy|noisy-cube|small-noisy-coil|small-noisy-folded <out.obj>
+//   surface_scale_bench shape coil|knot|folded|uvsphere|noisy|noisy-cube|small-noisy-coil|small-noisy-folded <out.obj>
 //                             [<in mesh> for noisy]
 //       writes a generated mesh (tests/native/surface/test_meshes.h: the same shapes the tests use,
 //       at benchmark size): the coil (8 turns, tube radius 0.12, pitch 0.3, 4000 x 48 quads,
 //       384k triangles), a tube along a torus knot (3000 x 24 quads, 144k triangles, faces six times
 //       longer around than along), a body with two limbs folded against it (3000 x 64 quads, 384k triangles,
-//       and 150 specks of debris),
+//       and 150 specks of debris), a UV sphere of 2000 x 150 quads (596k triangles, faces 7:1 at the
+//       equator),
 //       or <in mesh> with normal noise of +-0.3 mean edge lengths (seed 3).
 //   surface_scale_bench exact <mesh>   (pairs "a b" of file vertex indices on stdin)
 //       prints {"distances":[...]}: the exact polyhedral geodesic distance of every pair
@@ -81,6 +82,8 @@ static int shape(int argc, char** argv) {
   if (kind == "knot") return write_obj(testing::knot_tube(3000, 24), out);
   // With specks of debris, as a scan of a folded creature has (the Stanford dragon: 150).
   if (kind == "folded") return write_obj(testing::with_debris(testing::folded_body(3000, 64), 150, 3, 0.002), out);
+  // A modeler's UV sphere: 2000 x 150 quads, faces 7:1 at the equator, fans of 2000 at the poles.
+  if (kind == "uvsphere") return write_obj(testing::uv_sphere(2000, 150), out);
   if (kind == "noisy" && argc > 4) return write_obj(testing::noisy(testing::read_mesh(argv[4]), 0.3, 3), out);
   // Small noisy shapes for accuracy checks against the exact distance (`steiner`), which is too slow
   // on the benchmark's 384k-triangle ones.
@@ -307,12 +310,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "surface_scale_bench: %s\n", e.what());
     return 1;
   }
-  std::fprintf(stderr,
-               "usage: surface_scale_bench shape coil|knot|folded|noisy|noisy-cube|small-noisy-coil|small-noisy-folded "
-               "<out.obj> [<in mesh>]\n"
-               "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
-               "       surface_scale_bench search <mesh> <pairs> <seed>\n"
-               "       surface_scale_bench steiner <mesh> <sources> <targets> <seed>\n"
-               "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths] [<guide.obj>]\n");
+  std::fprintf(
+      stderr,
+      "usage: surface_scale_bench shape coil|knot|folded|uvsphere|noisy|noisy-cube|small-noisy-coil|small-noisy-folded "
+      "<out.obj> [<in mesh>]\n"
+      "       surface_scale_bench exact <mesh>  (pairs on stdin)\n"
+      "       surface_scale_bench search <mesh> <pairs> <seed>\n"
+      "       surface_scale_bench steiner <mesh> <sources> <targets> <seed>\n"
+      "       surface_scale_bench curves <mesh> <polygons> <seed> [lengths] [<guide.obj>]\n");
   return 2;
 }

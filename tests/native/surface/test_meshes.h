@@ -241,6 +241,55 @@ inline Arrays folded_body(int along, int around) {
 
 // The connected components of a built mesh's faces (faces sharing an edge): each face's component,
 // numbered in the order of their first faces.
+// ---- Meshes with long thin faces and graded ones (not tuned on) ---------------------------------
+
+// A unit sphere of `around` x `rings` quads split in two, its poles fans of `around` triangles, as a
+// modeler's UV sphere: faces (2 pi / around) by (pi / rings) at the equator, thinner towards the poles.
+inline Arrays uv_sphere(int around, int rings) {
+  Arrays a;
+  a.positions.insert(a.positions.end(), {0, 0, 1});
+  for (int j = 1; j < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double theta = kPi * j / rings, phi = 2 * kPi * i / around;
+      a.positions.insert(a.positions.end(),
+                         {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+    }
+  a.positions.insert(a.positions.end(), {0, 0, -1});
+  const int south = rings * around - around + 1;
+  auto at = [&](int j, int i) { return 1 + (j - 1) * around + (i % around); };
+  for (int i = 0; i < around; ++i) a.triangles.insert(a.triangles.end(), {0, at(1, i), at(1, i + 1)});
+  for (int j = 1; j + 1 < rings; ++j)
+    for (int i = 0; i < around; ++i)
+      a.triangles.insert(a.triangles.end(),
+                         {at(j, i), at(j + 1, i), at(j, i + 1), at(j, i + 1), at(j + 1, i), at(j + 1, i + 1)});
+  for (int i = 0; i < around; ++i)
+    a.triangles.insert(a.triangles.end(), {south, at(rings - 1, i + 1), at(rings - 1, i)});
+  return a;
+}
+
+// A disc of `rings` rings of `around` quads (split in two) round a centre fan, the ring radii growing
+// geometrically from `inner` to 1 (a graded mesh: faces 1/inner times smaller at the centre than at
+// the rim), lifted into a gentle bump z = 0.05 sin(3x) cos(2y).
+inline Arrays graded_disc(int rings, int around, double inner = 1e-4) {
+  Arrays a;
+  auto vertex = [&](double x, double y) {
+    a.positions.insert(a.positions.end(), {x, y, 0.05 * std::sin(3 * x) * std::cos(2 * y)});
+  };
+  vertex(0, 0);
+  for (int j = 0; j < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double r = inner * std::pow(1 / inner, double(j) / (rings - 1)), phi = 2 * kPi * i / around;
+      vertex(r * std::cos(phi), r * std::sin(phi));
+    }
+  auto at = [&](int j, int i) { return 1 + j * around + (i % around); };
+  for (int i = 0; i < around; ++i) a.triangles.insert(a.triangles.end(), {0, at(0, i), at(0, i + 1)});
+  for (int j = 0; j + 1 < rings; ++j)
+    for (int i = 0; i < around; ++i)
+      a.triangles.insert(a.triangles.end(),
+                         {at(j, i), at(j + 1, i), at(j, i + 1), at(j, i + 1), at(j + 1, i), at(j + 1, i + 1)});
+  return a;
+}
+
 inline std::vector<int> face_components(const TriMesh& mesh) {
   std::vector<int> part(mesh.triangles.size(), -1), stack;
   int parts = 0;

@@ -204,6 +204,10 @@ TEST(SurfaceValidity, RandomCurvesOnTheSharedMeshes) {
                     testing::thinned_tube(600, 24, true, 4, 2)});
   inputs.push_back(
       {"noisy spot", testing::noisy(testing::read_mesh(testing::shared_data("meshes/spot.obj")), 0.3, 3), {}});
+  // Long thin faces round fans of 400 at the poles (the search's weight follows their stretch), and a
+  // disc whose faces shrink 10,000 times towards its centre.
+  inputs.push_back({"UV sphere", testing::uv_sphere(400, 60), {}});
+  inputs.push_back({"graded disc", testing::graded_disc(200, 64), {}});
   for (const auto& [name_string, arrays, guide] : inputs) {
     const char* name = name_string.c_str();
     const auto t0 = std::chrono::steady_clock::now();

@@ -110,8 +110,8 @@ class Straightener {
   // ---- The whole straightening ----
   // Phases (ii)+(iii) on `strip` (consecutive faces adjacent; a on strip.front(), b on strip.back()):
   // `path` is the straightened path, `strip` its strip. Adds its flips and frozen vertices to stats.
-  // At most `max_passes` passes (options.max_passes when negative); false when they did not make the
-  // path locally shortest (`path` is then the path after the last of them).
+  // At most `max_passes` passes (options.max_passes when negative); false when they ran out before
+  // the path was locally shortest (`path` is then the path after the last of them).
   bool straighten(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, GeodesicPath& path,
                   PathStats* stats = nullptr, int max_passes = -1);
 
