@@ -418,6 +418,40 @@ path's points took 2-5 ms for all the sides (coil, a 96k proxy: 74.6 ms and 14,0
 for the coarse paths, 4.7 for the mapping, 24.3 straightening with 2,184 flips, length -0.09%; knotted tube, 36k:
 115.3 -> 31.0 + 2.7 + 57.0, -0.37%; folded body, 24k: 179.8 -> 15.5 + 2.2 + 66.4, -1.8%).`;
 
+const THIN_NOTE = `Long thin faces and graded meshes (2026-12-05, afternoon; meshes not tuned on, traced with
+\`splinekit trace --random 100 --seed 3\`, wasm). A UV sphere (2000 × 150 quads, 596k triangles, the row above) traced at a median
+of 20.1 ms, p90 42.8: its greedy kDual searches expanded 52,000 nodes per curve, because centroid-to-centroid
+paths zigzag across long thin faces (20 times the straight way there), faster than the A* term falls at weight 3.
+The weight now follows the dual graph's stretch, measured when the graph is built (ShortestPathOptions::
+dual_stretch_weight, "Why these defaults"): median 13.1 ms, p90 31.6, p99 47.3. A graded disc (600 rings from
+radius 1e-4 to 1 round a fan of 256, 307k triangles) traced at a median of 3.7 ms but a worst curve of 214 ms.
+One of its second-level paths, straightened through pieces that met 0.0004 from the centre, took 5,942 passes
+(132 ms) where the search's strip took 26 (1.3 ms) to the same path: the seeding's area estimate said 0, as the
+landmark bound (dual-graph distances, long round the centre's fan) ran past the pieces' own length. Seeded
+straightening now stops after 256 passes and the search takes over (no seeded path of the meshes above takes
+more): 60 random disc curves natively 0.74x the time, that curve 185 -> 66 ms. Not fixed: a guided side that ends
+near the centre took 3,990 passes (93 ms; without the guide 1,091 passes, 25 ms): where faces 10,000 times
+smaller than the guide's fan round a point, the straightening moves across hundreds of rings of vertices, one a
+pass (the disc after: median 3.35 ms, p90 13.4, max 214).
+
+Measured and dropped the same afternoon (native, the two variants interleaved curve by curve in one process, 40
+random curves): the landmark bound left out where it reaches the pieces' own length (the disc's case): the coil
+1.4x, the knotted tube 1.6x, the folded body 1.3x slower, as their bounds run past the pieces' length too and seeding
+is right there; the median face instead of the mean in the seeding's estimate: the disc 1.17x; distances along
+straight runs in the kDual search (the refined search's windows on face nodes): the UV sphere 0.92x, but nefertiti,
+spot_loop2_369k and the dragon 1.13-1.14x (the dragon's curves 1.4% longer); chords only beyond a turn of 0.1 rad
+(not 0.03): knotted tube 0.92x, coil 0.965x, folded body 1.04x; a group of flips that failed retried as
+semi-stars in the same pass (not the largest turn alone): the tubes 0.96-0.99x, nefertiti's curves 0.15% longer
+(other local geodesics); the guide's own path left unstraightened, or 3 to 6 passes: 1.04-1.6x (the fine
+straightening pays more than the guide's passes save).
+
+Where a random curve's time goes now (native, 40 curves): the three first-level sides take 50% (coil), 62% (knotted
+tube), 60% (folded body), 64% (dragon), 52% (UV sphere); the second level's three long paths through the control
+points 10-25% more. A guided side costs 1.9 ms natively on the coil, about half of it the guide's exact search (it
+expands the band of the tube between the ends, 6,000 of the guide's 24,000 faces for a 400-face path: no landmark
+bounds the way round a tube), and 2.2 ms on the knotted tube, 85% of it straightening (45 passes over the whole
+2,200-face strip, each moving 3-4 bends by a vertex).`;
+
 const GUIDE_NOTE = `Coarse guide (2026-12-05, wasm/core/surface/coarse_guide.*, src/surface/coarse-guide.ts). On a mesh of
 65,536 triangles or more SurfaceMesh simplifies the file to a sixteenth of its faces with meshoptimizer's
 \`simplify\` (edge collapses under a 1% error bound, npm, MIT: it keeps a subset of the vertices and the
@@ -622,6 +656,8 @@ their difference is the machine's noise:
 ${before.join('\n')}
 
 ${GUIDE_NOTE}
+
+${THIN_NOTE}
 
 Work per curve, median / p99 over the curves (SurfaceMeshHandle counters, summed over a curve's
 shortest paths): paths searched, of those the ones whose strips followed the coarse guide, paths seeded

@@ -34,14 +34,14 @@ struct ShortestPathOptions {
                                        // get one graph node per such length
   int steiner = 2;                     // graph nodes on every edge
   double dual_heuristic_weight = 3;    // weight of the A* Euclidean term in the kDual search
-  // ... at least this many times the dual graph's stretch (0: never), DualSearch::dual_stretch(): a
-  // path from centroid to centroid across long thin faces zigzags, up to 2/3 of the long side for
-  // 1/2 of the short one, and where that stretch passes the weight, the distance grows faster along
-  // the way than the A* term falls, and the greedy search expands everything within reach (on a UV
-  // sphere of 2000 x 150 quads, 7:1 at the equator and thinner towards the poles, a random curve's
-  // searches expanded 52,000 nodes: 2026-12-05, 40 random curves, native: stretch 16.1, weight 20,
-  // 0.64x the time, 0.11x the nodes, the same curves; the knotted tube 5.35, 0.96x; the meshes whose
-  // faces are near regular measure 1.4-1.8 and keep the weight).
+  // ... at least this many times the dual graph's stretch (0: never), DualSearch::dual_stretch(). Across
+  // long thin faces a path from centroid to centroid zigzags: along the short side of a quad split in
+  // two it runs about 2/3 of the long side per quad crossed. Where that stretch passes the weight, the
+  // distance grows faster along the way than the A* term falls, and the greedy search expands all it
+  // can reach (2026-12-05, native, 40 random curves, interleaved: a UV sphere of 2000 x 150 quads, 7:1
+  // at the equator and thinner towards the poles, stretch 20.1, weight 25: 0.64x the time, 0.09x the
+  // nodes, the same curves; the knotted tube 5.2: 0.965x; the folded body 6.8: 0.996x; the meshes
+  // whose faces are near regular measure 1.3-1.8 and keep the weight).
   double dual_stretch_weight = 1.25;
   // A kDual strip of at least this many faces is searched again from b to a, and the strip whose
   // funnel path is shorter is straightened (0: never): the greedy search's strip depends on the end
