@@ -133,6 +133,32 @@ TEST(CoarseGuide, SmallGuidesGetLandmarks) {
   EXPECT_GT(guide->bytes(), guide->landmarks().bytes());
 }
 
+// The guide's search is exact, so its strip is the guide's shortest from either end: one search per
+// path, however long (a guide as fine as the coil, whose paths run to thousands of faces; the
+// mesh's own search looks again from the other end from 512).
+TEST(CoarseGuide, ItsOwnSearchRunsOncePerPath) {
+  GeodesicSolver guided(coil());
+  set_guide(guided, testing::thinned_tube(kAlong, kAround, false, 1, 1));
+  const CoarseGuide* guide = guided.coarse_guide();
+  ASSERT_NE(guide, nullptr);
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> vertex(0, static_cast<int>(coil().positions.size()) - 1);
+  int guided_paths = 0, long_guide_paths = 0;
+  for (int k = 0; k < 20; ++k) {
+    const PathStats before = guide->stats();
+    PathStats one;
+    GeodesicPath path;
+    ASSERT_TRUE(guided.shortest_path(vertex_point(coil(), vertex(rng)), vertex_point(coil(), vertex(rng)), path, &one,
+                                     SearchGraph::kDual));
+    const int searches = guide->stats().searches - before.searches;
+    EXPECT_LE(searches, 1);
+    guided_paths += one.guided;
+    long_guide_paths += searches == 1 && guide->stats().strip_faces - before.strip_faces >= 512;
+  }
+  EXPECT_GE(guided_paths, 10);
+  EXPECT_GE(long_guide_paths, 3);
+}
+
 // A bad decimation is refused, naming what is wrong, and the guide set before stays.
 TEST(CoarseGuide, RefusesBadTrianglesNamingThemAndKeepsTheEarlierGuide) {
   const TriMesh& mesh = coil();

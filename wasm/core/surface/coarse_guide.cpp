@@ -75,6 +75,12 @@ CoarseGuide::CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> c
   // faces (2026-12-05, 40 random curves, native: knotted tube 426 -> 382 ms, nefertiti 96 -> 88 ms,
   // guide nodes expanded 3.1 and 1.9 times fewer; 4 landmarks cost 0.5 bytes per mesh face).
   own.landmark_min_faces = 1024;
+  // One search per path: the search from the other end and the landmark descent make up for a greedy
+  // strip's dependence on where it starts, and the exact search's strip is the dual graph's shortest
+  // whichever end it starts from (2026-12-05, native, 40 random curves, interleaved: the coil's guide
+  // paths of 512 faces or more searched twice, its curves 0.925x the time without, the same curves;
+  // the other meshes' guide paths are shorter, unchanged).
+  own.dual_reverse_search_faces = 0, own.landmark_descent = false;
   solver_ = std::make_unique<GeodesicSolver>(coarse_, own);
   for (const auto& t : coarse_.triangles)
     for (int k = 0; k < 3; ++k) mean_edge_ += (coarse_.positions[t[(k + 1) % 3]] - coarse_.positions[t[k]]).norm();
@@ -130,7 +136,7 @@ int CoarseGuide::nearest_kept(const MeshPoint& p) {
 bool CoarseGuide::coarse_path(const MeshPoint& a, const MeshPoint& b, int min_faces) {
   const int ca = nearest_kept(a), cb = nearest_kept(b);
   if (ca < 0 || cb < 0) return false;
-  if (!solver_->shortest_path(vertex_point(coarse_, ca), vertex_point(coarse_, cb), path_, nullptr, SearchGraph::kDual))
+  if (!solver_->shortest_path(vertex_point(coarse_, ca), vertex_point(coarse_, cb), path_, &stats_, SearchGraph::kDual))
     return false;
   if (static_cast<int>(path_.strip.size()) < min_faces) return false;
   path_positions(coarse_, path_, along_);

@@ -48,6 +48,8 @@ class CoarseGuide {
   const TriMesh& coarse() const { return coarse_; }
   // The landmarks of the guide's own search (on its components of 1024 faces or more).
   const Landmarks& landmarks() const;
+  // The work of the guide's own paths (its searches, strips and passes), summed since it was built.
+  const PathStats& stats() const { return stats_; }
   // The coarse mesh's mean edge length.
   double mean_edge() const { return mean_edge_; }
   // Whether step 3 walks the coarse path's segments rather than descends towards its points: on a
@@ -91,6 +93,7 @@ class CoarseGuide {
   std::vector<int> tail_;    // the search after the descent
   bool walks_ = false;       // walks()
   double mean_edge_ = 0;     // mean_edge()
+  PathStats stats_;          // stats()
 };
 
 }  // namespace splinekit::surface
