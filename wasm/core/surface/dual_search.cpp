@@ -74,8 +74,11 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
     centroids_[f] = local((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3);
   }
   landmarks_ = Landmarks(mesh, centroids_, options.landmarks, options.landmark_min_faces);
-  dual_stretch_ = measure_stretch();
-  dual_weight_ = std::max(dual_weight_, options.dual_stretch_weight * dual_stretch_);
+  // (not measured where it would not be used: the coarse guide's exact search)
+  if (options.dual_stretch_weight > 0) {
+    dual_stretch_ = measure_stretch();
+    dual_weight_ = std::max(dual_weight_, options.dual_stretch_weight * dual_stretch_);
+  }
 }
 
 double DualSearch::measure_stretch() {
