@@ -82,6 +82,9 @@ CoarseGuide::CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> c
   // the other meshes' guide paths are shorter, unchanged).
   own.dual_reverse_search_faces = 0, own.landmark_descent = false;
   solver_ = std::make_unique<GeodesicSolver>(coarse_, own);
+  fine_of_coarse_.assign(coarse_.positions.size(), -1);
+  for (size_t v = 0; v < coarse_of_fine_.size(); ++v)
+    if (coarse_of_fine_[v] >= 0) fine_of_coarse_[coarse_of_fine_[v]] = static_cast<int>(v);
   for (const auto& t : coarse_.triangles)
     for (int k = 0; k < 3; ++k) mean_edge_ += (coarse_.positions[t[(k + 1) % 3]] - coarse_.positions[t[k]]).norm();
   mean_edge_ /= 3.0 * std::max<size_t>(1, coarse_.triangles.size());
@@ -108,7 +111,9 @@ CoarseGuide::~CoarseGuide() = default;
 const Landmarks& CoarseGuide::landmarks() const { return solver_->landmarks(); }
 
 size_t CoarseGuide::bytes() const {
-  return mesh_bytes(coarse_) + solver_->bytes() + coarse_of_fine_.capacity() * sizeof(int);
+  return mesh_bytes(coarse_) + solver_->bytes() +
+         (coarse_of_fine_.capacity() + fine_of_coarse_.capacity()) * sizeof(int) +
+         (from_a_.capacity() + from_b_.capacity()) * sizeof(double);
 }
 
 int CoarseGuide::nearest_kept(const MeshPoint& p) {
@@ -210,6 +215,85 @@ bool CoarseGuide::strip(const MeshPoint& a, const MeshPoint& b, int min_faces, D
   }
   remove_loops(strip, search.face_marks());
   return true;
+}
+
+double CoarseGuide::through_edge(int v, double dv, int u, double du, int w) const {
+  // In the face's plane: v at the origin, u at (l, 0), w above the axis, the source below it.
+  const Vec3 &pv = coarse_.positions[v], e = coarse_.positions[u] - pv, x = coarse_.positions[w] - pv;
+  const double l = e.norm(), inf = std::numeric_limits<double>::infinity();
+  if (!(l > 0)) return inf;
+  const double xw = x.dot(e) / l, yw = std::sqrt(std::max(0.0, x.squaredNorm() - xw * xw));
+  const double xs = (dv * dv - du * du + l * l) / (2 * l), ys2 = dv * dv - xs * xs;
+  if (!(ys2 >= 0) || !(yw > 0)) return inf;
+  const double ys = -std::sqrt(ys2);
+  // (Only where the straight way from the source to w crosses the edge.)
+  const double at = xs + (xw - xs) * (-ys) / (yw - ys);
+  return at >= 0 && at <= l ? std::hypot(xw - xs, yw - ys) : inf;
+}
+
+bool CoarseGuide::corridor(const MeshPoint& a, const MeshPoint& b, double slack, std::vector<int>& face_marks,
+                           std::vector<int>& faces) {
+  const int ca = nearest_kept(a), cb = nearest_kept(b);
+  if (ca < 0 || cb < 0) return false;
+  const double inf = std::numeric_limits<double>::infinity();
+  if (from_a_.empty()) from_a_.assign(coarse_.positions.size(), inf), from_b_.assign(coarse_.positions.size(), inf);
+  // Dijkstra over the coarse mesh from `source` into `dist` (the vertices reached into `touched`),
+  // until the nearest open vertex lies farther than `limit` (or, with limit infinite, `stop` is
+  // taken: then the limit is (1 + slack) times its distance). With `other`, the distances from the
+  // other end, vertices farther than `limit` from both ends together are not expanded.
+  auto dijkstra = [&](int source, std::vector<double>& dist, std::vector<int>& touched, double limit, int stop,
+                      const std::vector<double>* other) {
+    const auto later = [](const std::pair<double, int>& x, const std::pair<double, int>& y) {
+      return x.first > y.first;
+    };
+    heap_.assign(1, {0.0, source});
+    dist[source] = 0, touched.push_back(source);
+    while (!heap_.empty()) {
+      std::pop_heap(heap_.begin(), heap_.end(), later);
+      const auto [d, v] = heap_.back();
+      heap_.pop_back();
+      if (d > dist[v]) continue;  // (stale)
+      if (v == stop) limit = (1 + slack) * d;
+      if (d > limit) break;
+      if (other && d + (*other)[v] > limit) continue;
+      bool closed;
+      vertex_fan(coarse_, v, fan_, closed);
+      auto lower = [&](int w, double dw) {
+        if (!(dw < dist[w])) return;
+        if (std::isinf(dist[w])) touched.push_back(w);
+        dist[w] = dw;
+        heap_.emplace_back(dw, w), std::push_heap(heap_.begin(), heap_.end(), later);
+      };
+      for (int f : fan_) {
+        const auto& t = coarse_.triangles[f];
+        const int k = corner_of(coarse_, f, v);
+        for (int side = 1; side <= 2; ++side) {
+          const int w = t[(k + side) % 3], u = t[(k + 3 - side) % 3];
+          lower(w, d + (coarse_.positions[w] - coarse_.positions[v]).norm());
+          if (!std::isinf(dist[u])) lower(w, through_edge(v, d, u, dist[u], w));
+        }
+      }
+    }
+    return limit;
+  };
+  reached_.clear(), reached_b_.clear();
+  const double bound = dijkstra(ca, from_a_, reached_, inf, cb, nullptr);
+  bool found = !std::isinf(from_a_[cb]);
+  seeds_.clear();
+  if (found) {
+    dijkstra(cb, from_b_, reached_b_, bound, -1, &from_a_);
+    // The coarse vertices on ways at most `bound` long, as the fine faces around their fine vertices.
+    for (int v : reached_) {
+      if (!(from_a_[v] + from_b_[v] <= bound)) continue;
+      bool closed;
+      vertex_fan(fine_, fine_of_coarse_[v], fan_, closed);
+      seeds_.insert(seeds_.end(), fan_.begin(), fan_.end());
+    }
+    grow_faces(fine_, seeds_, mean_edge_, face_marks, faces);
+  }
+  for (int v : reached_) from_a_[v] = inf;
+  for (int v : reached_b_) from_b_[v] = inf;
+  return found;
 }
 
 }  // namespace splinekit::surface

@@ -66,6 +66,17 @@ class CoarseGuide {
   // where the descent stops, its face table for the loops).
   bool strip(const MeshPoint& a, const MeshPoint& b, int min_faces, DualSearch& search, std::vector<int>& strip,
              PathStats* stats);
+  // The fine faces near every way from a to b on the guide at most `slack` longer than its shortest:
+  // the coarse vertices v with d(a', v) + d(v, b') <= (1 + slack) d(a', b') (a', b': the kept
+  // vertices nearest a and b; d: Dijkstra over the coarse mesh with the fast-marching update across
+  // its edges, through_edge; from a' out to (1 + slack) d(a', b'), from b' only through vertices
+  // that can still pass the test), and the fine faces within one coarse mean edge of them. A refined search inside it finds the strip of the shortest path
+  // wherever the guide's shape says the way might go: where two ways round a tube or a limb are
+  // about as long, both (a corridor around the guide's one path leaves out the other, and on the
+  // knotted tube of the benchmarks a tenth of the shortest paths went the other way). False when no
+  // kept vertex lies near a or b, or b' cannot be reached from a'. face_marks: as remove_loops'.
+  bool corridor(const MeshPoint& a, const MeshPoint& b, double slack, std::vector<int>& face_marks,
+                std::vector<int>& faces);
 
  private:
   CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> coarse_of_fine, const ShortestPathOptions& options);
@@ -83,6 +94,13 @@ class CoarseGuide {
   // than min_faces or none.
   bool coarse_path(const MeshPoint& a, const MeshPoint& b, int min_faces);
 
+  // corridor()'s distance at w across the coarse edge from v to u (dv and du from the source; the
+  // three corners of a face): from the point source in the face's plane that lies dv from v and du
+  // from u on the far side of the edge, where the straight way from it to w crosses the edge, else
+  // infinity (a fast-marching update). Along edges alone a path zigzags, its length depends on its
+  // direction, and on the noisy spot and the folded body the true way lay outside a 1% corridor.
+  double through_edge(int v, double dv, int u, double du, int w) const;
+
   const TriMesh& fine_;
   TriMesh coarse_;
   std::vector<int> coarse_of_fine_;  // #fine vertices: the coarse mesh vertex at a fine one, -1 if not kept
@@ -91,9 +109,16 @@ class CoarseGuide {
   std::vector<Vec3> along_;  // the coarse path's points
   std::vector<int> queue_;   // nearest_kept's walk
   std::vector<int> tail_;    // the search after the descent
-  bool walks_ = false;       // walks()
-  double mean_edge_ = 0;     // mean_edge()
-  PathStats stats_;          // stats()
+  // corridor()'s: the fine vertex of each coarse one, the distances from a' and b' (infinity where
+  // not reached; as many as coarse vertices, allocated by the first corridor), their queue, the
+  // coarse vertices each reached, a fan and the seed faces.
+  std::vector<int> fine_of_coarse_;
+  std::vector<double> from_a_, from_b_;
+  std::vector<std::pair<double, int>> heap_;
+  std::vector<int> reached_, reached_b_, fan_, seeds_;
+  bool walks_ = false;    // walks()
+  double mean_edge_ = 0;  // mean_edge()
+  PathStats stats_;       // stats()
 };
 
 }  // namespace splinekit::surface

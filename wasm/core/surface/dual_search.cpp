@@ -135,7 +135,8 @@ size_t DualSearch::bytes() const {
              sizeof(int) +
          graph_.long_bits.capacity() * sizeof(uint64_t) +
          (face_slot_.capacity() + edge_slot_.capacity()) * sizeof(int) + visits_.capacity() * sizeof(Visit) +
-         centroids_.capacity() * sizeof(centroids_[0]) + landmarks_.bytes();
+         centroids_.capacity() * sizeof(centroids_[0]) + corridor_bits_.capacity() * sizeof(uint64_t) +
+         landmarks_.bytes();
 }
 
 // Position of graph node `node` (on edge e, -1 for a face node), relative to origin_: a face centroid,
@@ -296,7 +297,7 @@ struct Window {
 }  // namespace
 
 bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats,
-                               SearchGraph graph) {
+                               SearchGraph graph, const std::vector<int>* corridor) {
   const bool dual = graph == SearchGraph::kDual;
   strip.clear();
   last_length_ = std::numeric_limits<double>::infinity();
@@ -312,6 +313,15 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
       return true;
     }
   }
+  // The faces the search may enter: the corridor's and the ends', or all.
+  if (corridor) {
+    if (corridor_bits_.empty()) corridor_bits_.assign((static_cast<size_t>(nf) + 63) / 64, 0);
+    auto mark = [&](int f) { corridor_bits_[f >> 6] |= uint64_t{1} << (f & 63); };
+    for (int f : *corridor) mark(f);
+    for (int f : sources) mark(f);
+    for (int f : targets) mark(f);
+  }
+  auto allowed = [&](int f) { return !corridor || (corridor_bits_[f >> 6] >> (f & 63) & 1); };
   // (Relative to origin_, as the nodes' positions.)
   const Vec3 pa = eval_position(mesh_, a) - origin_;
   const Vec3 pb = eval_position(mesh_, b) - origin_;
@@ -431,13 +441,13 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
     if (dual) {
       arrive(u);
       for (int g : mesh_.adjacency[u])
-        if (g >= 0) relax(g, -1, u, pu, du);
+        if (g >= 0 && allowed(g)) relax(g, -1, u, pu, du);
     } else {  // (an edge node: the refined search has no centroid nodes)
       int faces[2];
       node_faces(mesh_, graph_, u, faces);
       const int e = graph_.edge_of_node(u);
       for (int f : faces) {
-        if (f < 0) continue;
+        if (f < 0 || !allowed(f)) continue;
         // On into f: straight from u's pseudo-source where it sees through u's window, else from u.
         const Visit& vu = visits_[r];
         const Window window(mesh_, origin_, graph_.edge_halfedge[e], f, vu, f != vu.via && vu.via >= 0);
@@ -476,6 +486,11 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
         }
       }
     }
+  }
+  if (corridor) {
+    for (int f : *corridor) corridor_bits_[f >> 6] = 0;
+    for (int f : sources) corridor_bits_[f >> 6] = 0;
+    for (int f : targets) corridor_bits_[f >> 6] = 0;
   }
   if (stats) ++stats->searches, stats->visited_nodes += visited;
   if (best_face >= 0) last_length_ = best;

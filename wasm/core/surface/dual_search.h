@@ -104,8 +104,9 @@ class DualSearch {
   // ---- Mutators ----
   // The face strip from a to b (mesh space; consecutive faces adjacent, no face twice), or false
   // (strip empty) when b cannot be reached. Adds the nodes it expanded to stats->visited_nodes.
+  // With a `corridor`, the search keeps to its faces (and those of a and b).
   bool initial_strip(const MeshPoint& a, const MeshPoint& b, std::vector<int>& strip, PathStats* stats = nullptr,
-                     SearchGraph graph = SearchGraph::kRefined);
+                     SearchGraph graph = SearchGraph::kRefined, const std::vector<int>* corridor = nullptr);
   // The search-graph length of the last initial_strip's path, from a to b (the A* distance, weighted
   // as its Euclidean term in the kDual search; infinity when b was not reached, 0 when a and b share
   // a face).
@@ -160,6 +161,9 @@ class DualSearch {
   // matches its record's is stale and skipped.
   RadixQueue queue_;
   std::vector<int> sources_, targets_;  // faces holding a and b
+  // One bit per face: the corridor of the search under way (all clear between searches; allocated
+  // by the first search that has one).
+  std::vector<uint64_t> corridor_bits_;
   double last_length_ = 0;
   // The search's positions (node records, windows, centroids) are in single precision relative to
   // `origin_`, the centre of the mesh's bounding box (TriMesh::centre): a float keeps 7 digits of a coordinate, which

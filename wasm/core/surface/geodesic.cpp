@@ -36,7 +36,16 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
     straightener_.straighten(a, b, strip_, path, stats);
     return true;
   }
-  if (!initial_strip(a, b, strip_, stats, graph)) {
+  // A long refined search keeps to the corridor of the guide's near-shortest ways.
+  const double slack = straightener_.options.guide_corridor_slack;
+  bool searched = false;
+  if (graph == SearchGraph::kRefined && slack > 0 && far_apart(a, b) &&
+      guide_->corridor(a, b, slack, search_.face_marks(), corridor_)) {
+    searched = search_.initial_strip(a, b, strip_, stats, graph, &corridor_);
+    search_length_ = search_.last_length();
+    if (stats) ++stats->guided;
+  }
+  if (!searched && !initial_strip(a, b, strip_, stats, graph)) {
     path = GeodesicPath{a, b, {}, {}, {}};
     return false;
   }
@@ -64,14 +73,19 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
   return true;
 }
 
-bool GeodesicSolver::guided_strip(const MeshPoint& a, const MeshPoint& b, PathStats* stats) {
+bool GeodesicSolver::far_apart(const MeshPoint& a, const MeshPoint& b) const {
   const int faces = straightener_.options.coarse_guide_faces;
   if (!guide_ || faces <= 0) return false;
   // Ends whose distance is bounded below by fewer guide edges than that: a short path, which the
   // greedy search finds at once (the guide's would cost its search and the walks to kept vertices).
   const double apart = std::max((eval_position(mesh_, a) - eval_position(mesh_, b)).norm(),
                                 search_.landmarks().bound_between(a.face, b.face));
-  if (apart < faces * guide_->mean_edge() || !guide_->strip(a, b, faces, search_, strip_, stats)) return false;
+  return apart >= faces * guide_->mean_edge();
+}
+
+bool GeodesicSolver::guided_strip(const MeshPoint& a, const MeshPoint& b, PathStats* stats) {
+  const int faces = straightener_.options.coarse_guide_faces;
+  if (!far_apart(a, b) || !guide_->strip(a, b, faces, search_, strip_, stats)) return false;
   search_length_ = std::numeric_limits<double>::quiet_NaN();
   if (stats) ++stats->guided;
   return true;

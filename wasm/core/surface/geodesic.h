@@ -2,7 +2,8 @@
 // §6.2 for the refined graph). Three phases, each in its own unit:
 //   (i)   an initial strip of faces from a search on the (refined) dual graph (dual_search.h), or for
 //         a long kDual path on a mesh with a coarse guide, the strip that follows the path found on
-//         the guide (coarse_guide.h);
+//         the guide, and for a long kRefined one, the search kept to the guide's corridor of
+//         near-shortest ways (coarse_guide.h);
 //   (ii)  the strip is unfolded into the plane (unfold.h) and the funnel algorithm finds the
 //         shortest path inside it (funnel.h);
 //   (iii) the strip is straightened by flips at the path's reflex vertices until it is locally
@@ -96,6 +97,9 @@ class GeodesicSolver {
   // mean edges apart by the bounds, its coarse path at least that many faces); false without a guide
   // or when not so.
   bool guided_strip(const MeshPoint& a, const MeshPoint& b, PathStats* stats);
+  // Whether a and b lie at least coarse_guide_faces of the guide's mean edges apart (in space or by
+  // the landmarks' bound); false without a guide.
+  bool far_apart(const MeshPoint& a, const MeshPoint& b) const;
   // The length of the funnel path from a to b inside `strip` (phase (ii) alone).
   double funnel_length(const MeshPoint& a, const MeshPoint& b, const std::vector<int>& strip);
 
@@ -103,11 +107,12 @@ class GeodesicSolver {
   DualSearch search_;
   std::unique_ptr<CoarseGuide> guide_;
   Straightener straightener_;
-  std::vector<int> strip_;    // the strip between the phases
-  std::vector<int> back_;     // a long kDual strip's other candidate (searched from b to a, or the descent's)
-  std::vector<int> tail_;     // the descent candidate's search after the descent
-  std::vector<int> fan_;      // straighten_through's: the faces around a vertex where two pieces meet
-  double search_length_ = 0;  // last_search_length()
+  std::vector<int> strip_;     // the strip between the phases
+  std::vector<int> back_;      // a long kDual strip's other candidate (searched from b to a, or the descent's)
+  std::vector<int> tail_;      // the descent candidate's search after the descent
+  std::vector<int> fan_;       // straighten_through's: the faces around a vertex where two pieces meet
+  std::vector<int> corridor_;  // the faces a guided refined search keeps to
+  double search_length_ = 0;   // last_search_length()
 };
 
 }  // namespace splinekit::surface

@@ -21,6 +21,27 @@ void remove_loops(std::vector<int>& strip, std::vector<int>& face_marks) {
   for (int f : strip) face_marks[f] = -1;
 }
 
+void grow_faces(const TriMesh& mesh, const std::vector<int>& faces, double width, std::vector<int>& face_marks,
+                std::vector<int>& out) {
+  auto centroid = [&](int f) {
+    const auto& t = mesh.triangles[f];
+    return Vec3((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3);
+  };
+  // face_marks: the face of `faces` each face was reached from.
+  out.clear();
+  for (int f : faces)
+    if (face_marks[f] < 0) face_marks[f] = f, out.push_back(f);
+  const double reach = width * width;
+  for (size_t i = 0; i < out.size(); ++i) {
+    const int seed = face_marks[out[i]];
+    const Vec3 from = centroid(seed);
+    for (int g : mesh.adjacency[out[i]])
+      if (g >= 0 && face_marks[g] < 0 && (centroid(g) - from).squaredNorm() <= reach)
+        face_marks[g] = seed, out.push_back(g);
+  }
+  for (int f : out) face_marks[f] = -1;
+}
+
 namespace {
 
 // Crossing i of a path as weights on face strip[i + side] (side 0: its own face, 1: the next one).

@@ -53,5 +53,10 @@ Tangent end_tangent(const TriMesh& mesh, const GeodesicPath& path);
 // Cuts the loops out of a strip: when a face appears twice, the faces between are dropped.
 // face_marks: #F (or more) entries, -1 everywhere on entry and again on return.
 void remove_loops(std::vector<int>& strip, std::vector<int>& face_marks);
+// The faces around `faces` (theirs included, no face twice) into `out`: breadth first across edges,
+// each face reached from one of `faces` whose centroid lies within `width` (in space) of that
+// face's. face_marks as for remove_loops.
+void grow_faces(const TriMesh& mesh, const std::vector<int>& faces, double width, std::vector<int>& face_marks,
+                std::vector<int>& out);
 
 }  // namespace splinekit::surface
