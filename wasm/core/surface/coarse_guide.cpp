@@ -55,14 +55,22 @@ MeshStatus CoarseGuide::build(const TriMesh& fine, const int* triangles, int cou
   }
   // Fine vertex -> coarse mesh vertex (a fine vertex split by the repairs keeps one of its copies).
   std::vector<int> coarse_of_fine(fine.positions.size(), -1);
-  for (size_t c = 0; c < coarse.file_vertex.size(); ++c) coarse_of_fine[fine_vertex[coarse.file_vertex[c]]] = int(c);
-  guide.reset(new CoarseGuide(fine, std::move(coarse), std::move(coarse_of_fine), options));
+  // And back: every coarse vertex's fine one (the copies of a split one, the same).
+  std::vector<int> fine_of_coarse(coarse.file_vertex.size());
+  for (size_t c = 0; c < coarse.file_vertex.size(); ++c) {
+    fine_of_coarse[c] = fine_vertex[coarse.file_vertex[c]];
+    coarse_of_fine[fine_of_coarse[c]] = int(c);
+  }
+  guide.reset(new CoarseGuide(fine, std::move(coarse), std::move(coarse_of_fine), std::move(fine_of_coarse), options));
   return MeshStatus::kOk;
 }
 
 CoarseGuide::CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> coarse_of_fine,
-                         const ShortestPathOptions& options)
-    : fine_(fine), coarse_(std::move(coarse)), coarse_of_fine_(std::move(coarse_of_fine)) {
+                         std::vector<int> fine_of_coarse, const ShortestPathOptions& options)
+    : fine_(fine),
+      coarse_(std::move(coarse)),
+      coarse_of_fine_(std::move(coarse_of_fine)),
+      fine_of_coarse_(std::move(fine_of_coarse)) {
   ShortestPathOptions own = options;
   own.coarse_guide_faces = 0;  // (no guide of its own)
   // The coarse search exact on its dual graph (A* with admissible terms), not greedy: the guide is
@@ -82,9 +90,6 @@ CoarseGuide::CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> c
   // the other meshes' guide paths are shorter, unchanged).
   own.dual_reverse_search_faces = 0, own.landmark_descent = false;
   solver_ = std::make_unique<GeodesicSolver>(coarse_, own);
-  fine_of_coarse_.assign(coarse_.positions.size(), -1);
-  for (size_t v = 0; v < coarse_of_fine_.size(); ++v)
-    if (coarse_of_fine_[v] >= 0) fine_of_coarse_[coarse_of_fine_[v]] = static_cast<int>(v);
   for (const auto& t : coarse_.triangles)
     for (int k = 0; k < 3; ++k) mean_edge_ += (coarse_.positions[t[(k + 1) % 3]] - coarse_.positions[t[k]]).norm();
   mean_edge_ /= 3.0 * std::max<size_t>(1, coarse_.triangles.size());

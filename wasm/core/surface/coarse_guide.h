@@ -70,16 +70,17 @@ class CoarseGuide {
   // the coarse vertices v with d(a', v) + d(v, b') <= (1 + slack) d(a', b') (a', b': the kept
   // vertices nearest a and b; d: Dijkstra over the coarse mesh with the fast-marching update across
   // its edges, through_edge; from a' out to (1 + slack) d(a', b'), from b' only through vertices
-  // that can still pass the test), and the fine faces within one coarse mean edge of them. A refined search inside it finds the strip of the shortest path
-  // wherever the guide's shape says the way might go: where two ways round a tube or a limb are
-  // about as long, both (a corridor around the guide's one path leaves out the other, and on the
-  // knotted tube of the benchmarks a tenth of the shortest paths went the other way). False when no
-  // kept vertex lies near a or b, or b' cannot be reached from a'. face_marks: as remove_loops'.
+  // that can still pass the test), and the fine faces within one coarse mean edge of them. A refined search inside it
+  // finds the strip of the shortest path wherever the guide's shape says the way might go: where two ways round a tube
+  // or a limb are about as long, both (a corridor around the guide's one path leaves out the other, and on the knotted
+  // tube of the benchmarks a tenth of the shortest paths went the other way). False when no kept vertex lies near a or
+  // b, or b' cannot be reached from a'. face_marks: as remove_loops'.
   bool corridor(const MeshPoint& a, const MeshPoint& b, double slack, std::vector<int>& face_marks,
                 std::vector<int>& faces);
 
  private:
-  CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> coarse_of_fine, const ShortestPathOptions& options);
+  CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> coarse_of_fine, std::vector<int> fine_of_coarse,
+              const ShortestPathOptions& options);
   // The coarse mesh vertex nearest p on the fine mesh (fewest faces away, then nearest in space), -1
   // when none lies within a bounded walk.
   int nearest_kept(const MeshPoint& p);
@@ -104,15 +105,15 @@ class CoarseGuide {
   const TriMesh& fine_;
   TriMesh coarse_;
   std::vector<int> coarse_of_fine_;  // #fine vertices: the coarse mesh vertex at a fine one, -1 if not kept
+  std::vector<int> fine_of_coarse_;  // #coarse vertices: the fine vertex of each
   std::unique_ptr<GeodesicSolver> solver_;
   GeodesicPath path_;        // scratch
   std::vector<Vec3> along_;  // the coarse path's points
   std::vector<int> queue_;   // nearest_kept's walk
   std::vector<int> tail_;    // the search after the descent
-  // corridor()'s: the fine vertex of each coarse one, the distances from a' and b' (infinity where
-  // not reached; as many as coarse vertices, allocated by the first corridor), their queue, the
-  // coarse vertices each reached, a fan and the seed faces.
-  std::vector<int> fine_of_coarse_;
+  // corridor()'s: the distances from a' and b' (infinity where not reached; as many as coarse
+  // vertices, allocated by the first corridor), their queue, the coarse vertices each reached, a fan
+  // and the seed faces.
   std::vector<double> from_a_, from_b_;
   std::vector<std::pair<double, int>> heap_;
   std::vector<int> reached_, reached_b_, fan_, seeds_;
