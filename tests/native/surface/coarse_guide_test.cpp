@@ -167,7 +167,9 @@ TEST(CoarseGuide, ItsOwnSearchRunsOncePerPath) {
 // search's path, and on this small coil (8 turns of 16 quads round) two thirds of the mesh at most.
 TEST(CoarseGuide, RefinedSearchKeepsToTheCorridorOfNearShortestWays) {
   const TriMesh& mesh = coil();
-  GeodesicSolver guided(mesh), plain(mesh);
+  ShortestPathOptions options;
+  options.guide_corridor_slack = 0.04;
+  GeodesicSolver guided(mesh, options), plain(mesh);
   set_guide(guided);
   reference::ExactGeodesic exact = testing::exact_geodesic(mesh);
   std::mt19937 rng(17);
@@ -192,7 +194,7 @@ TEST(CoarseGuide, RefinedSearchKeepsToTheCorridorOfNearShortestWays) {
       const double length = path_length(mesh, path);
       EXPECT_GE(length, d[target] * (1 - 1e-9)) << source << " -> " << target;
       EXPECT_LE(length, d[target] * 1.005) << source << " -> " << target;
-      ASSERT_TRUE(guide.corridor(a, b, ShortestPathOptions{}.guide_corridor_slack, marks, corridor));
+      ASSERT_TRUE(guide.corridor(a, b, options.guide_corridor_slack, marks, corridor));
       corridor_faces += corridor.size();
       for (int f : corridor) inside[f] = 1;
       int missing = 0;
@@ -204,7 +206,14 @@ TEST(CoarseGuide, RefinedSearchKeepsToTheCorridorOfNearShortestWays) {
   EXPECT_GE(pairs, 10);
   EXPECT_LT(corridor_faces, pairs * mesh.triangles.size() * 2 / 3) << corridor_faces / pairs << " faces a pair";
   EXPECT_LT(with.visited_nodes * 4, without.visited_nodes * 3) << with.visited_nodes << " vs " << without.visited_nodes;
-  // The marks are left clear for the next user.
+  // The marks are left clear for the next user; by default (no slack) the search is the whole mesh's.
+  PathStats whole;
+  GeodesicSolver by_default(mesh);
+  set_guide(by_default);
+  GeodesicPath path;
+  ASSERT_TRUE(by_default.shortest_path(vertex_point(mesh, 0),
+                                       vertex_point(mesh, static_cast<int>(mesh.positions.size()) - 1), path, &whole));
+  EXPECT_EQ(whole.guided, 0);
   EXPECT_EQ(std::count(marks.begin(), marks.end(), -1), static_cast<long>(marks.size()));
 }
 
