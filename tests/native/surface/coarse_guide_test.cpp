@@ -168,7 +168,6 @@ TEST(CoarseGuide, ItsOwnSearchRunsOncePerPath) {
 TEST(CoarseGuide, RefinedSearchKeepsToTheCorridorOfNearShortestWays) {
   const TriMesh& mesh = coil();
   ShortestPathOptions options;
-  options.guide_corridor_slack = 0.04;
   GeodesicSolver guided(mesh, options), plain(mesh);
   set_guide(guided);
   reference::ExactGeodesic exact = testing::exact_geodesic(mesh);
@@ -194,7 +193,7 @@ TEST(CoarseGuide, RefinedSearchKeepsToTheCorridorOfNearShortestWays) {
       const double length = path_length(mesh, path);
       EXPECT_GE(length, d[target] * (1 - 1e-9)) << source << " -> " << target;
       EXPECT_LE(length, d[target] * 1.005) << source << " -> " << target;
-      ASSERT_TRUE(guide.corridor(a, b, options.guide_corridor_slack, marks, corridor));
+      ASSERT_TRUE(guide.corridor(a, b, options.guide_corridor_slack, options.guide_corridor_edges, marks, corridor));
       corridor_faces += corridor.size();
       for (int f : corridor) inside[f] = 1;
       int missing = 0;
@@ -206,9 +205,11 @@ TEST(CoarseGuide, RefinedSearchKeepsToTheCorridorOfNearShortestWays) {
   EXPECT_GE(pairs, 10);
   EXPECT_LT(corridor_faces, pairs * mesh.triangles.size() * 2 / 3) << corridor_faces / pairs << " faces a pair";
   EXPECT_LT(with.visited_nodes * 4, without.visited_nodes * 3) << with.visited_nodes << " vs " << without.visited_nodes;
-  // The marks are left clear for the next user; by default (no slack) the search is the whole mesh's.
+  // The marks are left clear for the next user; with no slack the search is the whole mesh's.
   PathStats whole;
-  GeodesicSolver by_default(mesh);
+  ShortestPathOptions off;
+  off.guide_corridor_slack = 0;
+  GeodesicSolver by_default(mesh, off);
   set_guide(by_default);
   GeodesicPath path;
   ASSERT_TRUE(by_default.shortest_path(vertex_point(mesh, 0),

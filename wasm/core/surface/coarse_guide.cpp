@@ -236,16 +236,16 @@ double CoarseGuide::through_edge(int v, double dv, int u, double du, int w) cons
   return at >= 0 && at <= l ? std::hypot(xw - xs, yw - ys) : inf;
 }
 
-bool CoarseGuide::corridor(const MeshPoint& a, const MeshPoint& b, double slack, std::vector<int>& face_marks,
-                           std::vector<int>& faces) {
+bool CoarseGuide::corridor(const MeshPoint& a, const MeshPoint& b, double slack, double slack_edges,
+                           std::vector<int>& face_marks, std::vector<int>& faces) {
   const int ca = nearest_kept(a), cb = nearest_kept(b);
   if (ca < 0 || cb < 0) return false;
   const double inf = std::numeric_limits<double>::infinity();
   if (from_a_.empty()) from_a_.assign(coarse_.positions.size(), inf), from_b_.assign(coarse_.positions.size(), inf);
   // Dijkstra over the coarse mesh from `source` into `dist` (the vertices reached into `touched`),
   // until the nearest open vertex lies farther than `limit` (or, with limit infinite, `stop` is
-  // taken: then the limit is (1 + slack) times its distance). With `other`, the distances from the
-  // other end, vertices farther than `limit` from both ends together are not expanded.
+  // taken: then the limit is (1 + slack) times its distance and slack_edges mean edges more). With `other`, the
+  // distances from the other end, vertices farther than `limit` from both ends together are not expanded.
   auto dijkstra = [&](int source, std::vector<double>& dist, std::vector<int>& touched, double limit, int stop,
                       const std::vector<double>* other) {
     const auto later = [](const std::pair<double, int>& x, const std::pair<double, int>& y) {
@@ -258,7 +258,7 @@ bool CoarseGuide::corridor(const MeshPoint& a, const MeshPoint& b, double slack,
       const auto [d, v] = heap_.back();
       heap_.pop_back();
       if (d > dist[v]) continue;  // (stale)
-      if (v == stop) limit = (1 + slack) * d;
+      if (v == stop) limit = (1 + slack) * d + slack_edges * mean_edge_;
       if (d > limit) break;
       if (other && d + (*other)[v] > limit) continue;
       bool closed;

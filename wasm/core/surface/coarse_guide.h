@@ -67,7 +67,9 @@ class CoarseGuide {
   bool strip(const MeshPoint& a, const MeshPoint& b, int min_faces, DualSearch& search, std::vector<int>& strip,
              PathStats* stats);
   // The fine faces near every way from a to b on the guide at most `slack` longer than its shortest:
-  // the coarse vertices v with d(a', v) + d(v, b') <= (1 + slack) d(a', b') (a', b': the kept
+  // the coarse vertices v with d(a', v) + d(v, b') <= (1 + slack) d(a', b') + slack_edges e (e: the
+  // guide's mean edge; the guide's lengths stray from the mesh's by a share of a long way and by
+  // about an edge on a short one) (a', b': the kept
   // vertices nearest a and b; d: Dijkstra over the coarse mesh with the fast-marching update across
   // its edges, through_edge; from a' out to (1 + slack) d(a', b'), from b' only through vertices
   // that can still pass the test), and the fine faces within one coarse mean edge of them. A refined search inside it
@@ -75,7 +77,7 @@ class CoarseGuide {
   // or a limb are about as long, both (a corridor around the guide's one path leaves out the other, and on the knotted
   // tube of the benchmarks a tenth of the shortest paths went the other way). False when no kept vertex lies near a or
   // b, or b' cannot be reached from a'. face_marks: as remove_loops'.
-  bool corridor(const MeshPoint& a, const MeshPoint& b, double slack, std::vector<int>& face_marks,
+  bool corridor(const MeshPoint& a, const MeshPoint& b, double slack, double slack_edges, std::vector<int>& face_marks,
                 std::vector<int>& faces);
 
  private:

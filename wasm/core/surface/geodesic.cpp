@@ -40,7 +40,7 @@ bool GeodesicSolver::shortest_path(const MeshPoint& a, const MeshPoint& b, Geode
   const double slack = straightener_.options.guide_corridor_slack;
   bool searched = false;
   if (graph == SearchGraph::kRefined && slack > 0 && far_apart(a, b) &&
-      guide_->corridor(a, b, slack, search_.face_marks(), corridor_)) {
+      guide_->corridor(a, b, slack, straightener_.options.guide_corridor_edges, search_.face_marks(), corridor_)) {
     searched = search_.initial_strip(a, b, strip_, stats, graph, &corridor_);
     search_length_ = search_.last_length();
     if (stats) ++stats->guided;
