@@ -458,26 +458,27 @@ up for a greedy strip's dependence on where it starts; its search is exact, and 
 0.925x the time natively, the same curves; the other meshes' guide paths are shorter).`;
 
 const CORRIDOR_NOTE = `Refined search in the guide's corridor (2026-12-05, evening; CoarseGuide::corridor,
-ShortestPathOptions::guide_corridor_slack; built and tested, off by default). Shortest paths search the refined
-graph, whose A* term is Euclidean (no landmark term is admissible there): on the coil it expands a median of
-438,052 nodes a pair, the tube between the ends and past them, 3.16 times flipOut's time. With a slack s, between
-ends as far apart as a guided curve side's, the search keeps to a corridor: the coarse guide's vertices v with
-d(a', v) + d(v, b') <= (1 + s) d(a', b') (a', b': the kept vertices nearest the ends; d: Dijkstra over the guide
-with the fast-marching update across its edges), and the fine faces within one guide edge of them; the
-straightening after it is free of the corridor. Native, random vertex pairs, against the whole mesh's search in the
-same process: s = 0.04, coil 0.63x the time, knotted tube 0.74x, none more than 0.5% longer than the whole search's
-path in 80 pairs; s = 0.02 (coil 0.60x, knotted tube 0.62x, nefertiti 0.75x) took one of 80 knotted-tube pairs
-3.9% longer. In the benchmark (wasm, these pairs, s = 0.04), ours against flipOut's time: nefertiti 0.50, spot
-0.37, noisy spot 0.46, coil 2.16 (10,003 ms against 14,572 without the corridor), knotted tube 0.77 (3,045 against
-4,406), folded body 0.38 (4,715 against 10,429), UV sphere 0.20; but one knotted-tube path came out 9.6% longer
-than exact (98 of 100 within 0.5%, 100 without) and the folded body had 97 (99 without). The guide's lengths
-(six vertices round the knotted tube) stray further than the slack there; hence off until the corridor's width
-follows how far the guide's lengths stray from the mesh's. Tried and dropped: a corridor two guide edges wide
-around the guide's one path (the coil 0.24x, but 4 of the knotted tube's 40 pairs and 3 of spot's went the other
-way round, up to 2.7% longer: the guide's path picks one side); the guide's path found with its own refined
-search (spot right, the knotted tube still 3 of 40 long); distances along the guide's edges alone (their zigzag
-depends on direction: at s = 0.01 two of the noisy spot's 40 pairs and one of the folded body's lay outside, up
-to 2% longer).`;
+ShortestPathOptions::guide_corridor_slack and guide_corridor_edges; built and tested, off by default). Shortest
+paths search the refined graph, whose A* term is Euclidean (no landmark term is admissible there): on the coil it
+expands a median of 438,052 nodes a pair, the tube between the ends and past them, 3.16 times flipOut's time. With
+a slack s and e edges, between ends as far apart as a guided curve side's, the search keeps to a corridor: the
+coarse guide's vertices v with d(a', v) + d(v, b') <= (1 + s) d(a', b') + e times the guide's mean edge (a', b':
+the kept vertices nearest the ends; d: Dijkstra over the guide with the fast-marching update across its edges),
+and the fine faces within one guide edge of them; the straightening after it is free of the corridor. Two
+benchmark runs (wasm, the pairs of the table above, against exact; the second ran beside a test run on the other
+core, so its times are only good as ratios within the run), ours against the whole mesh's search / flipOut:
+s = 0.04, e = 0: nefertiti 0.93 / 0.50, spot 0.91 / 0.37, noisy spot 0.85 / 0.46, coil 0.69 / 2.16, knotted tube
+0.69 / 0.77, folded body 0.45 / 0.38, UV sphere 0.92 / 0.20, but one knotted-tube path 9.6% longer than exact (98
+of 100 within 0.5%, 100 without: on short ways the guide's lengths stray by about an edge, more than the share)
+and the folded body 97 (99 without); s = 0.04, e = 1: the knotted tube 100 of 100 (0.60 / 0.66), the coil 0.71 /
+2.71, the folded body 0.48 / 0.49 but still 97 of 100 (worst 1.0061; 1.0052 without). Hence off, until the
+corridor's width follows how far the guide's lengths stray from the mesh's. Native, random vertex pairs against
+the whole search in one process: s = 0.02, one of 80 knotted-tube pairs 3.9% longer (its guide has six vertices
+round the tube). Tried and dropped: a corridor two guide edges wide around the guide's one path (the coil 0.24x,
+but 4 of the knotted tube's 40 pairs and 3 of spot's went the other way round, up to 2.7% longer: the guide's
+path picks one side); the guide's path found with its own refined search (spot right, the knotted tube still 3 of
+40 long); distances along the guide's edges alone (their zigzag depends on direction: at s = 0.01 two of the noisy
+spot's 40 pairs and one of the folded body's lay outside, up to 2% longer).`;
 
 const GUIDE_NOTE = `Coarse guide (2026-12-05, wasm/core/surface/coarse_guide.*, src/surface/coarse-guide.ts). On a mesh of
 65,536 triangles or more SurfaceMesh simplifies the file to a sixteenth of its faces with meshoptimizer's

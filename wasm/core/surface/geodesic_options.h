@@ -87,12 +87,12 @@ struct ShortestPathOptions {
   // guide's one path: the coil 0.24x, but 4 of the knotted tube's 40 pairs and 3 of spot's took the
   // other way round (up to 2.7% longer); coarse distances along edges alone (no fast-marching
   // update): at 0.01 two of the noisy spot's 40 and one of the folded body's worse (up to 2%).
-  // Alone, it missed on short ways: in the benchmark (wasm, 100 pairs a mesh, against exact) one of
-  // the knotted tube's paths came out 9.6% longer (98 of 100 within 0.5%, 100 without) and the folded
-  // body had 97 (99); the ways' length gets guide_corridor_edges of the guide's mean edges more
-  // (native, the benchmark's pairs against the whole mesh's search: the knotted tube's two misses
-  // 1.051 and 1.009 -> none, 0.74x the time; the folded body none, 0.66x).
-  double guide_corridor_slack = 0.04;
+  // Off by default (0): alone, the share missed on short ways (in the benchmark, wasm, 100 pairs a
+  // mesh against exact, one of the knotted tube's paths came out 9.6% longer, 98 of 100 within 0.5%,
+  // 100 without); with guide_corridor_edges of the guide's mean edges more (0.04 and 1: the knotted
+  // tube 100 of 100, 0.60x the whole mesh's time, the coil 0.71x, the folded body 0.48x) the folded
+  // body still had 97 within 0.5% against 99 without (BENCHMARKS.md, "Surface at scale").
+  double guide_corridor_slack = 0;
   double guide_corridor_edges = 1;
   // Landmark lower bounds (landmarks.h) in components of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
