@@ -244,8 +244,10 @@ bool CoarseGuide::corridor(const MeshPoint& a, const MeshPoint& b, double slack,
   if (from_a_.empty()) from_a_.assign(coarse_.positions.size(), inf), from_b_.assign(coarse_.positions.size(), inf);
   // Dijkstra over the coarse mesh from `source` into `dist` (the vertices reached into `touched`),
   // until the nearest open vertex lies farther than `limit` (or, with limit infinite, `stop` is
-  // taken: then the limit is (1 + slack) times its distance and slack_edges mean edges more). With `other`, the
-  // distances from the other end, vertices farther than `limit` from both ends together are not expanded.
+  // taken: then the limit is (1 + slack) times its distance and slack_edges mean edges more). With
+  // `other`, the distances from the other end, vertices farther than `limit` from both ends together
+  // are not expanded (every vertex within the limit of the first search is settled, so its distance
+  // there is exact).
   auto dijkstra = [&](int source, std::vector<double>& dist, std::vector<int>& touched, double limit, int stop,
                       const std::vector<double>* other) {
     const auto later = [](const std::pair<double, int>& x, const std::pair<double, int>& y) {
@@ -283,7 +285,7 @@ bool CoarseGuide::corridor(const MeshPoint& a, const MeshPoint& b, double slack,
   };
   reached_.clear(), reached_b_.clear();
   const double bound = dijkstra(ca, from_a_, reached_, inf, cb, nullptr);
-  bool found = !std::isinf(from_a_[cb]);
+  const bool found = !std::isinf(from_a_[cb]);
   seeds_.clear();
   if (found) {
     dijkstra(cb, from_b_, reached_b_, bound, -1, &from_a_);
