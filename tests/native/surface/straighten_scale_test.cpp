@@ -12,7 +12,11 @@
 //     passes off the straightening and leave the paths as long as the flips one vertex at a time do;
 //   - windows (Straightener::windowed_pass) straighten the short stretches where a long path's last
 //     bends move on their own, and leave the paths as the whole passes do, for a fraction of the
-//     faces passed over.
+//     faces passed over;
+//   - on a UV sphere, whose long thin faces make the bends slide across their rows, spans
+//     (Straightener::span_pass) cross the runs of bends at once: the same paths, no bend left, in
+//     under half the passes; on the knotted tube a failed group retried as semi-stars keeps the
+//     pass.
 #include "../reference/exact_geodesic.h"
 #include "surface/geodesic.h"
 #include "surface/straighten.h"
@@ -279,6 +283,75 @@ TEST(StraightenAtScale, WindowsStraightenTheStretchesThatMoveAndLeaveThePathsAsL
   EXPECT_EQ(without.windows, 0);
   // (0.70 when written; 0.63-0.77 over other seeds)
   EXPECT_LT(with.pass_faces, 0.85 * without.pass_faces);
+}
+
+// A UV sphere's faces are long and thin (here 5:1 at the equator): across them the flips move the
+// strip by a row a pass, and a long path's bends slide across the rows for a hundred passes. On a
+// convex surface no locally shortest path bends at a vertex, so spans (Straightener::span_pass)
+// cross each run of bends at once. The paths come out as long as the flips make them, with no bend,
+// between the great circle and the sphere through the faces' nearest points, in under half the passes.
+TEST(StraightenAtScale, SpansTakePassesOffAUvSphereAndLeaveThePathsAsLong) {
+  const TriMesh mesh = testing::build(testing::uv_sphere(800, 50));
+  GeodesicSolver solver(mesh);
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  ShortestPathOptions flips_only;
+  flips_only.span_min_bends = 0;
+  Straightener spanning(mesh, marks), flipping(mesh, marks, flips_only);
+  std::mt19937 rng(37);
+  PathStats with, without;
+  int compared = 0;
+  for (int k = 0; k < 30; ++k) {
+    const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
+    const Vec3 pa = eval_position(mesh, a), pb = eval_position(mesh, b);
+    const double great_circle = std::acos(std::clamp(pa.normalized().dot(pb.normalized()), -1.0, 1.0));
+    if (great_circle > kPi - 0.3) continue;  // (one way round)
+    std::vector<int> strip, same;
+    ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
+    same = strip;
+    GeodesicPath spanned, flipped;
+    ASSERT_TRUE(spanning.straighten(a, b, strip, spanned, &with));
+    ASSERT_TRUE(flipping.straighten(a, b, same, flipped, &without));
+    ++compared;
+    EXPECT_NEAR(spanning.length(), flipping.length(), 1e-7 * flipping.length()) << "path " << k;
+    EXPECT_NEAR(path_length(mesh, spanned), spanning.length(), 1e-9 * spanning.length()) << "path " << k;
+    EXPECT_EQ(spanning.apices().size(), 2u) << "path " << k;
+    // The mesh lies inside the sphere, its vertices on it: a path on it is at most the great circle
+    // long and at least the great circle of the sphere through its faces' nearest points.
+    const double inner = std::cos(kPi / 50);  // (faces' distance from the centre, lower bound)
+    EXPECT_LE(spanning.length(), great_circle * (1 + 1e-9)) << "path " << k;
+    EXPECT_GE(spanning.length(), inner * great_circle) << "path " << k;
+  }
+  ASSERT_GT(compared, 15);
+  EXPECT_GT(with.chords_kept, 0);
+  // (0.40x the passes when written)
+  EXPECT_LT(with.passes, 0.5 * without.passes);
+}
+
+// On the knotted tube (faces six times longer round the tube than along it) a long path's last bends
+// slide along the tube's inner side, and a slide's zipper that runs past the bend's end fails the
+// pass's whole group: the group tried again as plain semi-stars (ShortestPathOptions::
+// retry_as_semi_stars) keeps the pass instead of giving it up. The same locally shortest paths, in
+// fewer passes.
+TEST(StraightenAtScale, AFailedGroupRetriedAsSemiStarsTakesPassesOffTheKnottedTube) {
+  const TriMesh mesh = testing::build(testing::knot_tube(1200, 24));
+  GeodesicSolver solver(mesh);
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  ShortestPathOptions give_up;
+  give_up.retry_as_semi_stars = false;
+  Straightener retrying(mesh, marks), giving_up(mesh, marks, give_up);
+  std::mt19937 rng(41);
+  PathStats with, without;
+  for (int k = 0; k < 30; ++k) {
+    const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
+    std::vector<int> strip, same;
+    ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
+    same = strip;
+    GeodesicPath retried, given_up;
+    ASSERT_TRUE(retrying.straighten(a, b, strip, retried, &with));
+    ASSERT_TRUE(giving_up.straighten(a, b, same, given_up, &without));
+    EXPECT_NEAR(retrying.length(), giving_up.length(), 1e-6 * giving_up.length()) << "path " << k;
+  }
+  EXPECT_LT(with.passes, 0.9 * without.passes);  // (0.84x when written)
 }
 
 TEST(StraightenAtScale, VertexSetIsASet) {

@@ -407,6 +407,122 @@ TEST(StraightenerChord, AWalkThatFailedBetweenTheSameApicesIsNotWalkedAgain) {
   EXPECT_EQ(s.walked() - walked, first_walk);
 }
 
+// ---- Span ---------------------------------------------------------------------------------------
+
+TEST(StraightenerSpan, CrossesEveryBendBetweenItsEndsAtOnce) {
+  // A strip through two dips: its funnel path bends at several vertices between the ends. The span
+  // from the start to the end (chord(0, last)) takes the faces the segment a -> b crosses (the flat
+  // plane: layout and space agree) in place of the strip's between its first and last faces, and
+  // the path in them is that segment.
+  const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
+  const MeshPoint a = at_xy(mesh, 0.1, 0.7), b = at_xy(mesh, 0.9, 0.7);
+  const std::vector<int> strip =
+      strip_through(mesh, {a, at_xy(mesh, 0.3, 0.21), at_xy(mesh, 0.52, 0.49), at_xy(mesh, 0.71, 0.13), b});
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  s.begin(a, b, strip);
+  const size_t last = s.apices().size() - 1;
+  ASSERT_GE(last, 4u) << "fewer than three bends";
+  const int n = static_cast<int>(s.strip().size());
+  Flip flip;
+  ASSERT_TRUE(s.chord(0, last, ChordRoom{0, n - 1, n - 1}, flip, 8));
+  EXPECT_TRUE(flip.chord);
+  EXPECT_EQ(flip.first, 0);
+  EXPECT_EQ(flip.last, n - 1);
+  const Vec2 pa = eval_position(mesh, a).head<2>(), pb = eval_position(mesh, b).head<2>();
+  std::vector<int> expected;
+  for (int f : faces_crossed(mesh, pa, pb))
+    if (f != strip.front() && f != strip.back()) expected.push_back(f);
+  ASSERT_GT(expected.size(), 20u);
+  EXPECT_EQ(flip.other, expected);
+  std::vector<int> out;
+  UnfoldedStrip u;
+  Splice splice;
+  s.apply({&flip}, out, u, splice);
+  expect_strip(mesh, out);
+  expect_fresh_layout(mesh, out, u);
+  std::vector<Apex> raw, after;
+  EXPECT_NEAR(s.shorten(u, raw, after, splice.path ? &splice : nullptr), (pb - pa).norm(), 1e-12);
+  EXPECT_EQ(after.size(), 2u);
+  // Between neighbouring apices it is the chord of the bend between them.
+  Flip one, same;
+  ChordRoom room;
+  ASSERT_NO_FATAL_FAILURE(semi_star_and_room(s, 2, room, one));
+  same = one;
+  ASSERT_TRUE(s.chord(2, room, one));
+  ASSERT_TRUE(s.chord(1, 3, room, same));
+  EXPECT_EQ(one.first, same.first);
+  EXPECT_EQ(one.last, same.last);
+  EXPECT_EQ(one.other, same.other);
+}
+
+TEST(StraightenerSpan, APassSpansTheFlatStretchesAndLeavesTheSaddlesBends) {
+  // A pass on a flat grid spans the run of bends there at once: the path is the segment after one
+  // pass, where flips alone take several.
+  testing::Arrays grid = testing::planar_grid(24, 1, 0);
+  const TriMesh flat = testing::build(grid);
+  const MeshPoint a = at_xy(flat, 0.1, 0.7), b = at_xy(flat, 0.9, 0.7);
+  const std::vector<int> strip =
+      strip_through(flat, {a, at_xy(flat, 0.3, 0.21), at_xy(flat, 0.52, 0.49), at_xy(flat, 0.71, 0.13), b});
+  std::vector<int> marks(flat.triangles.size(), -1);
+  Straightener s(flat, marks);
+  s.begin(a, b, strip);
+  const size_t middle = s.apices().size() / 2;
+  const int v = s.apices()[middle].vertex;
+  PathStats stats;
+  ASSERT_TRUE(s.pass(&stats));
+  EXPECT_EQ(stats.chords_kept, 1);
+  EXPECT_EQ(stats.accepted_flips, 1);
+  EXPECT_NEAR(s.length(), (eval_position(flat, b) - eval_position(flat, a)).norm(), 1e-12);
+  EXPECT_FALSE(s.pass(&stats));
+  ShortestPathOptions off;
+  off.span_min_bends = 0;
+  Straightener flips(flat, marks, off);
+  std::vector<int> in = strip;
+  GeodesicPath path;
+  PathStats passes;
+  flips.straighten(a, b, in, path, &passes);
+  EXPECT_GT(passes.passes, 2);
+  EXPECT_NEAR(flips.length(), s.length(), 1e-12);
+
+  // The same strip where the middle bend's vertex is a saddle (its neighbours alternately up and
+  // down: angle sum above 2π): a locally shortest path may bend there, and no span crosses it (the
+  // flips find whether the path stays: here it does not, by the same path with spans and without).
+  std::vector<int> ring;  // (v's neighbours in turn: each fan face's corner after v's)
+  for (int f : closed_fan(flat, v)) ring.push_back(flat.triangles[f][(corner_of(flat, f, v) + 1) % 3]);
+  ASSERT_EQ(ring.size() % 2, 0u);
+  for (size_t k = 0; k < ring.size(); ++k) grid.positions[3 * flat.file_vertex[ring[k]] + 2] = k % 2 ? 0.03 : -0.03;
+  const TriMesh saddled = testing::build(grid);
+  // (the same file faces and vertices: the mesh may number them otherwise)
+  auto same_face = [&](int f) { return saddled.mesh_face[flat.file_face[f]]; };
+  std::vector<int> saddled_strip;
+  for (int f : strip) saddled_strip.push_back(same_face(f));
+  const int sv = saddled.mesh_vertex[flat.file_vertex[v]];
+  double theta = 0;
+  for (int f : closed_fan(saddled, sv)) theta += corner_angle(saddled, f, sv);
+  ASSERT_GT(theta, 2 * kPi + 1e-3);
+  Straightener t(saddled, marks);
+  EXPECT_FALSE(t.holds_no_bend(sv));
+  EXPECT_TRUE(s.holds_no_bend(v));
+  EXPECT_TRUE(t.holds_no_bend(saddled.mesh_vertex[flat.file_vertex[ring[0]]]));  // (below all its neighbours: a cone)
+  EXPECT_FALSE(t.holds_no_bend(saddled.mesh_vertex[0]));                         // (a boundary)
+  t.begin({same_face(a.face), a.uv}, {same_face(b.face), b.uv}, saddled_strip);
+  auto bends_at = [](const Straightener& x, int w) {
+    return std::any_of(x.apices().begin(), x.apices().end(), [&](const Apex& y) { return y.vertex == w; });
+  };
+  ASSERT_TRUE(bends_at(t, sv));
+  PathStats spanned;
+  ASSERT_TRUE(t.pass(&spanned));
+  EXPECT_TRUE(bends_at(t, sv));
+  // To the end, with spans and without: the same path.
+  Straightener u(saddled, marks, off);
+  std::vector<int> in_t = saddled_strip, in_u = saddled_strip;
+  GeodesicPath pt, pu;
+  t.straighten({same_face(a.face), a.uv}, {same_face(b.face), b.uv}, in_t, pt);
+  u.straighten({same_face(a.face), a.uv}, {same_face(b.face), b.uv}, in_u, pu);
+  EXPECT_NEAR(t.length(), u.length(), 1e-12);
+}
+
 // ---- Apply --------------------------------------------------------------------------------------
 
 TEST(StraightenerApply, MakesSeveralFlipsAtOnceAsAFreshLayoutWould) {

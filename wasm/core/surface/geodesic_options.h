@@ -19,6 +19,31 @@ struct ShortestPathOptions {
   int slide_min = 4;             // ... when that passes at least this many bends (else a pass moves it)
   int slide_gap = 2;             // a slide passes at most this many untouched vertices between two bends
   int max_passes = 100000;       // safety bound on phase (iii)'s passes (each flips several vertices)
+  // A pass whose group of flips did not shorten the path tries the group again with its zippers and
+  // chords as plain semi-stars before the largest turn's flip alone (else: that flip alone). On the
+  // knotted tube of the benchmarks the slides of a long path's last bends often pass the bend's end,
+  // and the pass gave up the semi-stars with them (2026-12-07, native, 40 random curves, interleaved:
+  // 0.95x the time; the other meshes within 1.5%; the sides as long, the odd one another local
+  // geodesic, as many shorter as longer; BENCHMARKS.md, "Surface at scale", Spans).
+  bool retry_as_semi_stars = true;
+  // A run of at least span_min_bends consecutive bends of the path at vertices that cannot hold one
+  // (angle sum at most 2π: on a convex or flat stretch a locally shortest path bends nowhere) is
+  // crossed at once by the chord from the apex before the run to the one after it (a span,
+  // Straightener::span_pass), aimed again up to span_aims times where the surface turned the line,
+  // before the pass flips vertices; a path stops trying after span_failures spans that did not
+  // shorten it (0 for span_min_bends, or no chords: never). Where faces are long and thin across the
+  // way, each flip moves the strip by one row and the bends slide across the rows a vertex per pass
+  // (the UV sphere of the benchmarks: a 2.3-long side took 172 passes, with spans 12). 2026-12-07,
+  // native, 40 random curves, interleaved: the UV sphere 0.63x the time, the folded body 0.88x (its
+  // limbs are cylinders: flat), the knotted tube 0.97x, the others within 3%; the three sides of the
+  // curves as long in total (within 0.04%; on nefertiti a few go another way, up to 3.5% longer or
+  // shorter, as many each way). On 90 long sides alone: aimed again once (as the chords) the sphere's
+  // took 0.85x the time, four times 0.83x, eight 0.52x (a span across a long side misses the end's
+  // face without more); with bends at saddle vertices in the runs too, the knotted tube's 1.6x and the
+  // coil's 1.9x (the lines pass over the tube's inner side and come out longer).
+  int span_min_bends = 2;
+  int span_aims = 8;
+  int span_failures = 2;
   // A pass on a strip of at least window_min_faces faces (0: never) whose reflex vertices lie in
   // short stretches straightens each stretch on its own: the faces from a bend of the path at least
   // window_margin faces before it to one as far after (Straightener::windowed_pass). On the

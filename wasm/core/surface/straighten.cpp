@@ -51,6 +51,7 @@ bool Straightener::straighten(const MeshPoint& a, const MeshPoint& b, std::vecto
 void Straightener::begin(const MeshPoint& start, const MeshPoint& end, const std::vector<int>& strip) {
   frozen_.clear(), frozen_cos_.clear(), no_chain_.clear(), no_chord_.clear(), failed_chords_.clear();
   windows_off_ = false;
+  span_failures_ = 0;
   // The strip laid out last for these end points, no pass since (a candidate measured before it was
   // chosen, GeodesicSolver::shortest_path): its layout and funnel path stand.
   auto same = [](const MeshPoint& x, const MeshPoint& y) { return x.face == y.face && x.uv == y.uv; };
@@ -168,6 +169,7 @@ bool Straightener::pass(PathStats* stats) {
   }
   if (order_.empty()) return false;
   if (!in_window_ && windowed_pass(stats)) return true;
+  if (span_pass(stats)) return true;
   std::sort(order_.begin(), order_.end());
   used_ = 0;
   if (taken_.size() < static_cast<size_t>(n)) taken_.resize(n, 0);
@@ -191,6 +193,7 @@ bool Straightener::pass(PathStats* stats) {
       continue;
     }
     if (blocked) continue;
+    made.apex = j, made.run_first = run_first, made.run_last = run_last;
     // A chord spans the faces around the neighbouring apices: look for room before tracing it.
     ChordRoom room{0, n - 1, n - 1};
     int unused;
@@ -224,18 +227,27 @@ bool Straightener::pass(PathStats* stats) {
   std::sort(chosen_.begin(), chosen_.end(), [](const Flip* x, const Flip* y) { return x->first < y->first; });
   double trial_length = lay_trial(chosen_);
   if (!(trial_length < path_.length - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
-    // Together they did not shorten the path: fall back to the largest turn alone. The others'
-    // zippers and chords are not tried again (a semi-star at a reflex vertex shortens the path,
-    // a zipper or chord need not; one that does not kept the group failing pass after pass).
+    // Together they did not shorten the path. Their zippers and chords are not tried again (a
+    // semi-star at a reflex vertex shortens the path, a zipper or chord need not; one that does not
+    // kept the group failing pass after pass): the group again with those as the semi-stars they
+    // widened (options.retry_as_semi_stars; a group failed by one zipper that slid too far would
+    // otherwise give up the pass, and the next pass flip the same semi-stars), else the largest
+    // turn's flip alone.
     const Flip* best = *std::max_element(chosen_.begin(), chosen_.end(),
                                          [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
-    for (const Flip* f : chosen_) {
-      if (f == best) continue;
-      if (f->chord) no_chord_.insert(f->vertex);
-      if (f->chain) no_chain_.insert(f->vertex);
+    bool widened = false;
+    for (size_t i = 0; i < used_; ++i) {
+      Flip& f = flips_[i];
+      if ((!f.chain && !f.chord) || (&f == best && !options.retry_as_semi_stars)) continue;
+      if (f.chord) no_chord_.insert(f.vertex);
+      if (f.chain) no_chain_.insert(f.vertex);
+      if (options.retry_as_semi_stars) flip(f.apex, f.turn, f.run_first, f.run_last, f), widened = true;
     }
-    chosen_.assign(1, best);
-    trial_length = lay_trial(chosen_);
+    if (widened) trial_length = lay_trial(chosen_);
+    if (!(trial_length < path_.length - 1e-12 * mesh_.scale)) {
+      chosen_.assign(1, best);
+      trial_length = lay_trial(chosen_);
+    }
   }
   if (keep_trial(trial_length)) {
     if (stats) {
@@ -254,6 +266,52 @@ bool Straightener::pass(PathStats* stats) {
     }
   }
   return true;
+}
+
+bool Straightener::span_pass(PathStats* stats) {
+  if (!options.chords || options.span_min_bends <= 0 || span_failures_ >= options.span_failures) return false;
+  const int n = static_cast<int>(path_.strip.size());
+  // The reflex apices whose vertex cannot hold a bend of the path, in path order.
+  candidates_.clear();
+  for (const auto& entry : order_)
+    if (holds_no_bend(path_.apices[entry.second].vertex)) candidates_.push_back(entry.second);
+  std::sort(candidates_.begin(), candidates_.end());
+  if (taken_.size() < static_cast<size_t>(n)) taken_.resize(n, 0);
+  used_ = 0;
+  for (size_t r = 0; r < candidates_.size();) {
+    size_t e = r + 1;  // the run of consecutive apices candidates_[r .. e-1]
+    while (e < candidates_.size() && candidates_[e] == candidates_[e - 1] + 1) ++e;
+    const size_t jp = candidates_[r] - 1, jq = candidates_[e - 1] + 1;
+    r = e;
+    if (jq - jp - 1 < static_cast<size_t>(options.span_min_bends)) continue;
+    ChordRoom room{0, n - 1, n - 1};
+    int unused;
+    const Apex &p = path_.apices[jp], &q = path_.apices[jq];
+    if (p.vertex >= 0 && !run_of(p.vertex, p.portal, room.p_first, unused)) continue;
+    if (q.vertex >= 0 && !run_of(q.vertex, q.portal, room.q_first, room.q_last)) continue;
+    if (overlaps(room.p_first, room.q_last)) continue;
+    if (used_ == flips_.size()) flips_.emplace_back();
+    Flip& made = flips_[used_];
+    made.vertex = -1, made.turn = 0, made.chain = false;
+    if (stats) ++stats->chords_tried;
+    if (!chord(jp, jq, room, made, options.span_aims)) continue;
+    std::fill(taken_.begin() + made.first, taken_.begin() + made.last + 1, 1);
+    ++used_;
+  }
+  for (size_t i = 0; i < used_; ++i)
+    std::fill(taken_.begin() + flips_[i].first, taken_.begin() + flips_[i].last + 1, 0);
+  if (stats) stats->walked_faces += walked_;
+  walked_ = 0;
+  if (used_ > 0) {
+    chosen_.clear();
+    for (size_t i = 0; i < used_; ++i) chosen_.push_back(&flips_[i]);
+    if (keep_trial(lay_trial(chosen_))) {
+      if (stats) stats->accepted_flips += static_cast<int>(used_), stats->chords_kept += static_cast<int>(used_);
+      return true;
+    }
+  }
+  ++span_failures_;
+  return false;
 }
 
 double Straightener::lay_trial(const std::vector<const Flip*>& chosen) {
@@ -479,6 +537,8 @@ void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead) {
 // Slide
 // =================================================================================================
 
+bool Straightener::holds_no_bend(int v) { return angle_sum(v) < 2 * kPi + 1e-9; }  // (NaN: false)
+
 double Straightener::angle_sum(int v) {
   double& sum = angle_sums_[v];
   if (std::isnan(sum)) {
@@ -607,9 +667,11 @@ bool Straightener::walk_chord(size_t j, const ChordRoom& room, Flip& flip) {
   return false;
 }
 
-bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
+bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) { return chord(j - 1, j + 1, room, flip); }
+
+bool Straightener::chord(size_t jp, size_t jq, const ChordRoom& room, Flip& flip, int aims) {
   const int n = static_cast<int>(path_.strip.size());
-  const Apex &p = path_.apices[j - 1], &q = path_.apices[j + 1];
+  const Apex &p = path_.apices[jp], &q = path_.apices[jq];
   const Vec2 o = p.pos;
   Vec2 d = q.pos - p.pos;
   auto side = [&](const Vec2& c) { return cross(d, c - o); };  // > 0: left of the line
@@ -725,16 +787,23 @@ bool Straightener::chord(size_t j, const ChordRoom& room, Flip& flip) {
     return along();
   };
   Trace traced = turn_around_p() ? along() : Trace::kFailed;
-  // The surface between turned the line: aim again where the line's faces put q (once).
-  if (traced == Trace::kPassed || (traced == Trace::kReached && std::abs(cross(d, at - o)) > 1e-3 * d.squaredNorm())) {
+  // The surface between turned the line: aim again where the line's faces put q (`aims` times at
+  // most, while they miss q or reach it off the line).
+  auto off = [&]() {
+    return traced == Trace::kPassed ||
+           (traced == Trace::kReached && std::abs(cross(d, at - o)) > 1e-3 * d.squaredNorm());
+  };
+  for (int aim = 0; aim < aims && off(); ++aim) {
     if (!((at - o).squaredNorm() > 0)) return false;
     d = at - o;
     traced = walk_again();
   }
   if (traced != Trace::kReached) return false;
   // The path from p to q through the line's faces is at least |at - o| long, so the chord cannot
-  // help unless that beats the way by v.
-  if ((at - o).norm() >= (path_.apices[j].pos - p.pos).norm() + (q.pos - path_.apices[j].pos).norm()) return false;
+  // help unless that beats the way by the bends between.
+  double way = 0;
+  for (size_t k = jp; k < jq; ++k) way += (path_.apices[k + 1].pos - path_.apices[k].pos).norm();
+  if ((at - o).norm() >= way) return false;
   int last = n - 1;
   if (q.vertex >= 0) {  // around q, on the side the line passes it, to its strip faces
     const bool left = side(at) > 0;

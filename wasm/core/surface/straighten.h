@@ -11,7 +11,11 @@
 // chord (`chord`: the faces along the straight line between the neighbouring apices, which crosses
 // many rows of vertices at once). A fourth step, the slide (`slide`), makes a zipper that runs past
 // the neighbouring apices where the path would otherwise slide along a row of saddle vertices one
-// vertex per pass. A pass (`pass`) flips every reflex vertex whose faces do not touch
+// vertex per pass. A fifth, the span (`span_pass`), is a chord across a run of bends at once where
+// none of them can stay (vertices of angle sum at most 2π: convex or flat), from the apex before the
+// run to the one after it: across long thin faces the flips move the strip a row at a time, and
+// the bends slide across the rows a vertex per pass. A pass (`pass`) tries the spans first, else
+// flips every reflex vertex whose faces do not touch
 // another's and keeps the flips (`apply`) if the path gets shorter. A vertex is frozen up to the
 // turn the path made there (looked at again when the path turns more there, as after its
 // neighbours' flips), so that the path ends locally shortest: at every bend its angle on the far
@@ -62,6 +66,8 @@ struct Flip {
   std::vector<int> other;                 // the faces that replace the strip's between first and last
   std::vector<std::array<Vec2, 3>> laid;  // a chord's: where its trace laid `other` (the strip's layout)
   bool chain = false, chord = false;      // a zipper's / a chord's (else a semi-star's)
+  size_t apex = 0;                        // the apex it flips, and its vertex's run in the strip
+  int run_first = 0, run_last = 0;        // (the semi-star's first and last, before a zipper or chord)
 };
 
 // The strip faces a chord at apex j may replace: from the first face around apex j-1 (p_first) to
@@ -124,6 +130,10 @@ class Straightener {
   // The faces of the strip around vertex v, from the face at index `at` (clamped to the strip):
   // strip[first..last], or false when that face does not hold v.
   bool run_of(int v, int at, int& first, int& last) const;
+  // Whether no locally shortest path bends at vertex v: its angle sum is at most 2π (to rounding;
+  // the far side of a bend there spans less than π), as on a convex or flat stretch. False for a
+  // saddle (angle sum above 2π: a path may bend by up to the excess) and a boundary vertex.
+  bool holds_no_bend(int v);
   // Faces the chords' walks entered since the last pass counted them (PathStats::walked_faces).
   int walked() const { return walked_; }
   // The vertices the last zipper flipped, in strip order.
@@ -173,6 +183,10 @@ class Straightener {
   // around q to its strip faces. False (flip unusable) when the line meets a boundary or a vertex,
   // misses q twice, or cannot make the path shorter; `room` bounds the faces it may replace.
   bool chord(size_t j, const ChordRoom& room, Flip& flip);
+  // The chord from apex jp to apex jq (jp < jq - 1, room from the faces around apex jp to those
+  // around apex jq): the line across every bend between them at once, aimed again up to `aims`
+  // times. False likewise, or when the line is not shorter than the path's way between them.
+  bool chord(size_t jp, size_t jq, const ChordRoom& room, Flip& flip, int aims = 1);
   // `chord`, unless apex j's chord failed between the same neighbouring apices' vertices before.
   bool walk_chord(size_t j, const ChordRoom& room, Flip& flip);
   // The strip with `chosen` made (non-overlapping, in strip order) into `out`, and its layout into
@@ -192,6 +206,12 @@ class Straightener {
   // end on their own; `flip` replaces them by the result. False when the path there did not get
   // shorter.
   bool straighten_window(size_t ja, size_t jb, int first, int last, Flip& flip, PathStats* stats);
+  // A pass of spans (pass() tries it on its reflex apices, order_): for each run of at least
+  // options.span_min_bends consecutive ones at vertices that hold no bend (holds_no_bend), the
+  // chord from the apex before the run to the one after it (chord(jp, jq)), all kept together if
+  // they shorten the path. False (nothing kept) when there was none or they did not shorten it;
+  // after options.span_failures such passes the path tries no more.
+  bool span_pass(PathStats* stats);
   // The funnel path of an unfolded strip from the start to the end point (`raw`: as the funnel made
   // it; `out`: where it goes straight on dropped), and its length.
   double shorten(const UnfoldedStrip& u, std::vector<Apex>& raw, std::vector<Apex>& out, const Splice* splice) const;
@@ -273,6 +293,7 @@ class Straightener {
   std::vector<size_t> candidates_;
   Path outer_;
   bool in_window_ = false, windows_off_ = false;
+  int span_failures_ = 0;  // span passes of this path that did not shorten it
 };
 
 }  // namespace splinekit::surface
