@@ -218,30 +218,46 @@ TEST(StraightenAtScale, PathsAreLocallyShortestAndNeverShorterThanExact) {
   }
 }
 
-TEST(StraightenAtScale, SlidesTakePassesOffTheCoilAndLeaveThePathsAsLong) {
-  const TriMesh mesh = testing::build(testing::coil(800, 16));
+// The greedy search's strips between `count` pairs of random points (`seed`; strips shorter than
+// `min_faces` left out) straightened twice, with the default options and with `other`: `check(k,
+// ours, path, theirs)` looks at pair k's straighteners after both (`path`: the default options'
+// result), and the passes' counters go to `with` and `without`. Returns the pairs compared.
+template <class Check>
+int straighten_both(const TriMesh& mesh, const ShortestPathOptions& other, unsigned seed, int count, size_t min_faces,
+                    PathStats& with, PathStats& without, Check check) {
   GeodesicSolver solver(mesh);
   std::vector<int> marks(mesh.triangles.size(), -1);
-  ShortestPathOptions one_by_one;
-  one_by_one.slides = false;
-  Straightener sliding(mesh, marks), stepping(mesh, marks, one_by_one);
-  std::mt19937 rng(29);
-  int with = 0, without = 0;
-  for (int k = 0; k < 40; ++k) {
+  Straightener ours(mesh, marks), theirs(mesh, marks, other);
+  std::mt19937 rng(seed);
+  int compared = 0;
+  for (int k = 0; k < count; ++k) {
     const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
     std::vector<int> strip, same;
-    ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
+    EXPECT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
+    if (strip.size() < min_faces) continue;
     same = strip;
-    GeodesicPath slid, stepped;
-    PathStats slid_stats, stepped_stats;
-    sliding.straighten(a, b, strip, slid, &slid_stats);
-    stepping.straighten(a, b, same, stepped, &stepped_stats);
-    with += slid_stats.passes, without += stepped_stats.passes;
-    // Both are locally shortest paths from the same strip; the slide takes the same way in fewer steps.
-    EXPECT_NEAR(sliding.length(), stepping.length(), 1e-3 * stepping.length()) << "path " << k;
+    GeodesicPath path, their_path;
+    EXPECT_TRUE(ours.straighten(a, b, strip, path, &with));
+    EXPECT_TRUE(theirs.straighten(a, b, same, their_path, &without));
+    ++compared;
+    check(k, ours, path, theirs);
   }
+  return compared;
+}
+
+TEST(StraightenAtScale, SlidesTakePassesOffTheCoilAndLeaveThePathsAsLong) {
+  const TriMesh mesh = testing::build(testing::coil(800, 16));
+  ShortestPathOptions one_by_one;
+  one_by_one.slides = false;
+  PathStats with, without;
+  straighten_both(mesh, one_by_one, 29, 40, 0, with, without,
+                  [&](int k, const Straightener& sliding, const GeodesicPath&, const Straightener& stepping) {
+                    // Both are locally shortest paths from the same strip; the slide takes the same way
+                    // in fewer steps.
+                    EXPECT_NEAR(sliding.length(), stepping.length(), 1e-3 * stepping.length()) << "path " << k;
+                  });
   // 569 against 752 passes when written.
-  EXPECT_LT(with, 0.85 * without);
+  EXPECT_LT(with.passes, 0.85 * without.passes);
 }
 
 // The coil's long paths end by sliding a few bends along the saddle vertices of the tube's inner side,
@@ -251,33 +267,21 @@ TEST(StraightenAtScale, SlidesTakePassesOffTheCoilAndLeaveThePathsAsLong) {
 // longer coil than the others here (96k triangles), whose strips reach the default window_min_faces.
 TEST(StraightenAtScale, WindowsStraightenTheStretchesThatMoveAndLeaveThePathsAsLong) {
   const TriMesh mesh = testing::build(testing::coil(2000, 24));
-  GeodesicSolver solver(mesh);
-  std::vector<int> marks(mesh.triangles.size(), -1);
   ShortestPathOptions whole;
   whole.window_min_faces = 0;
-  Straightener windowed(mesh, marks), passing(mesh, marks, whole);
-  std::mt19937 rng(31);
   PathStats with, without;
-  int compared = 0;
-  for (int k = 0; k < 30; ++k) {
-    const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
-    std::vector<int> strip, same;
-    ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
-    if (strip.size() < 256) continue;
-    same = strip;
-    GeodesicPath in_windows, in_passes;
-    windowed.straighten(a, b, strip, in_windows, &with);
-    passing.straighten(a, b, same, in_passes, &without);
-    ++compared;
-    EXPECT_NEAR(windowed.length(), passing.length(), 1e-5 * passing.length()) << "path " << k;
-    EXPECT_NEAR(path_length(mesh, in_windows), windowed.length(), 1e-9 * windowed.length()) << "path " << k;
-    const std::vector<Apex>& apices = windowed.apices();
-    for (size_t j = 1; j + 1 < apices.size(); ++j) {
-      bool closed;
-      const double theta = angle_sum(mesh, apices[j].vertex, closed);
-      if (closed) EXPECT_GE(theta - kPi - turn_at(apices, j), kPi - 1e-6) << "path " << k << " bend " << j;
-    }
-  }
+  const int compared = straighten_both(
+      mesh, whole, 31, 30, 256, with, without,
+      [&](int k, const Straightener& windowed, const GeodesicPath& in_windows, const Straightener& passing) {
+        EXPECT_NEAR(windowed.length(), passing.length(), 1e-5 * passing.length()) << "path " << k;
+        EXPECT_NEAR(path_length(mesh, in_windows), windowed.length(), 1e-9 * windowed.length()) << "path " << k;
+        const std::vector<Apex>& apices = windowed.apices();
+        for (size_t j = 1; j + 1 < apices.size(); ++j) {
+          bool closed;
+          const double theta = angle_sum(mesh, apices[j].vertex, closed);
+          if (closed) EXPECT_GE(theta - kPi - turn_at(apices, j), kPi - 1e-6) << "path " << k << " bend " << j;
+        }
+      });
   ASSERT_GT(compared, 10);
   EXPECT_GT(with.windows, 30);
   EXPECT_EQ(without.windows, 0);
@@ -292,36 +296,23 @@ TEST(StraightenAtScale, WindowsStraightenTheStretchesThatMoveAndLeaveThePathsAsL
 // between the great circle and the sphere through the faces' nearest points, in under half the passes.
 TEST(StraightenAtScale, SpansTakePassesOffAUvSphereAndLeaveThePathsAsLong) {
   const TriMesh mesh = testing::build(testing::uv_sphere(800, 50));
-  GeodesicSolver solver(mesh);
-  std::vector<int> marks(mesh.triangles.size(), -1);
   ShortestPathOptions flips_only;
   flips_only.span_min_bends = 0;
-  Straightener spanning(mesh, marks), flipping(mesh, marks, flips_only);
-  std::mt19937 rng(37);
   PathStats with, without;
-  int compared = 0;
-  for (int k = 0; k < 30; ++k) {
-    const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
-    const Vec3 pa = eval_position(mesh, a), pb = eval_position(mesh, b);
-    const double great_circle = std::acos(std::clamp(pa.normalized().dot(pb.normalized()), -1.0, 1.0));
-    if (great_circle > kPi - 0.3) continue;  // (one way round)
-    std::vector<int> strip, same;
-    ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
-    same = strip;
-    GeodesicPath spanned, flipped;
-    ASSERT_TRUE(spanning.straighten(a, b, strip, spanned, &with));
-    ASSERT_TRUE(flipping.straighten(a, b, same, flipped, &without));
-    ++compared;
-    EXPECT_NEAR(spanning.length(), flipping.length(), 1e-7 * flipping.length()) << "path " << k;
-    EXPECT_NEAR(path_length(mesh, spanned), spanning.length(), 1e-9 * spanning.length()) << "path " << k;
-    EXPECT_EQ(spanning.apices().size(), 2u) << "path " << k;
-    // The mesh lies inside the sphere, its vertices on it: a path on it is at most the great circle
-    // long and at least the great circle of the sphere through its faces' nearest points.
-    const double inner = std::cos(kPi / 50);  // (faces' distance from the centre, lower bound)
-    EXPECT_LE(spanning.length(), great_circle * (1 + 1e-9)) << "path " << k;
-    EXPECT_GE(spanning.length(), inner * great_circle) << "path " << k;
-  }
-  ASSERT_GT(compared, 15);
+  straighten_both(mesh, flips_only, 37, 30, 0, with, without,
+                  [&](int k, const Straightener& spanning, const GeodesicPath& spanned, const Straightener& flipping) {
+                    EXPECT_NEAR(spanning.length(), flipping.length(), 1e-7 * flipping.length()) << "path " << k;
+                    EXPECT_NEAR(path_length(mesh, spanned), spanning.length(), 1e-9 * spanning.length())
+                        << "path " << k;
+                    EXPECT_EQ(spanning.apices().size(), 2u) << "path " << k;
+                    // The mesh lies inside the unit sphere, its vertices on it: a path on it is at most the great
+                    // circle arc between its ends' directions long (the shorter one, unless the ends are nearly
+                    // opposite: none here) and at least that arc on the sphere through the faces' nearest points.
+                    const Vec3 pa = eval_position(mesh, spanned.start), pb = eval_position(mesh, spanned.end);
+                    const double arc = std::acos(std::clamp(pa.normalized().dot(pb.normalized()), -1.0, 1.0));
+                    EXPECT_LE(spanning.length(), arc * (1 + 1e-9)) << "path " << k;
+                    EXPECT_GE(spanning.length(), std::cos(kPi / 50) * arc) << "path " << k;
+                  });
   EXPECT_GT(with.chords_kept, 0);
   // (0.40x the passes when written)
   EXPECT_LT(with.passes, 0.5 * without.passes);
@@ -334,23 +325,13 @@ TEST(StraightenAtScale, SpansTakePassesOffAUvSphereAndLeaveThePathsAsLong) {
 // fewer passes.
 TEST(StraightenAtScale, AFailedGroupRetriedAsSemiStarsTakesPassesOffTheKnottedTube) {
   const TriMesh mesh = testing::build(testing::knot_tube(1200, 24));
-  GeodesicSolver solver(mesh);
-  std::vector<int> marks(mesh.triangles.size(), -1);
   ShortestPathOptions give_up;
   give_up.retry_as_semi_stars = false;
-  Straightener retrying(mesh, marks), giving_up(mesh, marks, give_up);
-  std::mt19937 rng(41);
   PathStats with, without;
-  for (int k = 0; k < 30; ++k) {
-    const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
-    std::vector<int> strip, same;
-    ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
-    same = strip;
-    GeodesicPath retried, given_up;
-    ASSERT_TRUE(retrying.straighten(a, b, strip, retried, &with));
-    ASSERT_TRUE(giving_up.straighten(a, b, same, given_up, &without));
-    EXPECT_NEAR(retrying.length(), giving_up.length(), 1e-6 * giving_up.length()) << "path " << k;
-  }
+  straighten_both(mesh, give_up, 41, 30, 0, with, without,
+                  [&](int k, const Straightener& retrying, const GeodesicPath&, const Straightener& giving_up) {
+                    EXPECT_NEAR(retrying.length(), giving_up.length(), 1e-6 * giving_up.length()) << "path " << k;
+                  });
   EXPECT_LT(with.passes, 0.9 * without.passes);  // (0.84x when written)
 }
 

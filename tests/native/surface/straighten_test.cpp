@@ -49,6 +49,21 @@ void expect_fresh_layout(const TriMesh& mesh, const std::vector<int>& strip, con
   }
 }
 
+// `flip` made on the strip being straightened (apply): the new strip is a strip, laid out as a
+// fresh layout would lay it (`out`: its faces). Returns its funnel path's length, `after` its apices.
+double made_length(const TriMesh& mesh, Straightener& s, const Flip& flip, std::vector<Apex>& after,
+                   std::vector<int>* out = nullptr) {
+  std::vector<int> strip;
+  UnfoldedStrip u;
+  Splice splice;
+  s.apply({&flip}, strip, u, splice);
+  expect_strip(mesh, strip);
+  expect_fresh_layout(mesh, strip, u);
+  if (out) *out = strip;
+  std::vector<Apex> raw;
+  return s.shorten(u, raw, after, splice.path ? &splice : nullptr);
+}
+
 // The strip of the straight shortest paths through `via` on a flat mesh (consecutive pieces meet
 // inside a face), loops cut: the kind of strip phase (i) hands over, bent where `via` bends.
 std::vector<int> strip_through(const TriMesh& mesh, const std::vector<MeshPoint>& via) {
@@ -129,14 +144,9 @@ TEST(StraightenerFlip, TakesTheOtherSemiStarOfAFlatVertex) {
 
   // Made, the strip is the 4 faces on the other side; on a plane its funnel path is the segment.
   std::vector<int> out;
-  UnfoldedStrip u;
-  Splice splice;
-  s.apply({&flip}, out, u, splice);
+  std::vector<Apex> apices;
+  EXPECT_NEAR(made_length(mesh, s, flip, apices, &out), (pb - pa).norm(), 1e-12);
   EXPECT_EQ(out, (std::vector<int>{fan[0], fan[7], fan[6], fan[5]}));
-  expect_strip(mesh, out);
-  expect_fresh_layout(mesh, out, u);
-  std::vector<Apex> raw, apices;
-  EXPECT_NEAR(s.shorten(u, raw, apices, splice.path ? &splice : nullptr), (pb - pa).norm(), 1e-12);
   EXPECT_EQ(apices.size(), 2u);
 }
 
@@ -245,14 +255,8 @@ TEST(StraightenerZipper, TakesInExactlyTheVerticesThatStillBlock) {
 
   EXPECT_GT(flip.other.size(), semi_star);
   // Made, the path no longer touches any of them and is shorter.
-  std::vector<int> out;
-  UnfoldedStrip u;
-  Splice splice;
-  s.apply({&flip}, out, u, splice);
-  expect_strip(mesh, out);
-  expect_fresh_layout(mesh, out, u);
-  std::vector<Apex> raw, after;
-  EXPECT_LT(s.shorten(u, raw, after, splice.path ? &splice : nullptr), s.length() - 1e-6);
+  std::vector<Apex> after;
+  EXPECT_LT(made_length(mesh, s, flip, after), s.length() - 1e-6);
   for (const Apex& x : after)
     EXPECT_EQ(std::find(expected.begin(), expected.end(), x.vertex), expected.end()) << x.vertex;
 }
@@ -334,18 +338,12 @@ TEST(StraightenerChord, LaysTheFacesTheStraightLineCrosses) {
   ASSERT_GT(expected.size(), 10u);
   EXPECT_EQ(along, expected);
   // Where the walk laid them is where the strip's layout puts them: made, the layout is a fresh one.
-  std::vector<int> out;
-  UnfoldedStrip u;
-  Splice splice;
-  s.apply({&flip}, out, u, splice);
-  expect_strip(mesh, out);
-  expect_fresh_layout(mesh, out, u);
-  std::vector<Apex> raw, after;
   // The path can run straight from p to q now: it is shorter by at least what the bend at v cost.
   const double bend = (apices[j].pos - apices[j - 1].pos).norm() + (apices[j + 1].pos - apices[j].pos).norm() -
                       (apices[j + 1].pos - apices[j - 1].pos).norm();
   ASSERT_GT(bend, 1e-5);
-  EXPECT_LE(s.shorten(u, raw, after, splice.path ? &splice : nullptr), s.length() - bend + 1e-12);
+  std::vector<Apex> after;
+  EXPECT_LE(made_length(mesh, s, flip, after), s.length() - bend + 1e-12);
 }
 
 TEST(StraightenerChord, AWalkThatFailedBetweenTheSameApicesIsNotWalkedAgain) {
@@ -409,15 +407,20 @@ TEST(StraightenerChord, AWalkThatFailedBetweenTheSameApicesIsNotWalkedAgain) {
 
 // ---- Span ---------------------------------------------------------------------------------------
 
+// On the unit square's grid `mesh`: a strip from a to b through two dips below the segment between
+// them, whose funnel path bends at several vertices between the ends.
+std::vector<int> two_dips(const TriMesh& mesh, MeshPoint& a, MeshPoint& b) {
+  a = at_xy(mesh, 0.1, 0.7), b = at_xy(mesh, 0.9, 0.7);
+  return strip_through(mesh, {a, at_xy(mesh, 0.3, 0.21), at_xy(mesh, 0.52, 0.49), at_xy(mesh, 0.71, 0.13), b});
+}
+
 TEST(StraightenerSpan, CrossesEveryBendBetweenItsEndsAtOnce) {
-  // A strip through two dips: its funnel path bends at several vertices between the ends. The span
-  // from the start to the end (chord(0, last)) takes the faces the segment a -> b crosses (the flat
-  // plane: layout and space agree) in place of the strip's between its first and last faces, and
-  // the path in them is that segment.
+  // The span from the start to the end (chord(0, last)) takes the faces the segment a -> b crosses
+  // (the flat plane: layout and space agree) in place of the strip's between its first and last
+  // faces, and the path in them is that segment.
   const TriMesh mesh = testing::build(testing::planar_grid(24, 1, 0));
-  const MeshPoint a = at_xy(mesh, 0.1, 0.7), b = at_xy(mesh, 0.9, 0.7);
-  const std::vector<int> strip =
-      strip_through(mesh, {a, at_xy(mesh, 0.3, 0.21), at_xy(mesh, 0.52, 0.49), at_xy(mesh, 0.71, 0.13), b});
+  MeshPoint a, b;
+  const std::vector<int> strip = two_dips(mesh, a, b);
   std::vector<int> marks(mesh.triangles.size(), -1);
   Straightener s(mesh, marks);
   s.begin(a, b, strip);
@@ -435,14 +438,8 @@ TEST(StraightenerSpan, CrossesEveryBendBetweenItsEndsAtOnce) {
     if (f != strip.front() && f != strip.back()) expected.push_back(f);
   ASSERT_GT(expected.size(), 20u);
   EXPECT_EQ(flip.other, expected);
-  std::vector<int> out;
-  UnfoldedStrip u;
-  Splice splice;
-  s.apply({&flip}, out, u, splice);
-  expect_strip(mesh, out);
-  expect_fresh_layout(mesh, out, u);
-  std::vector<Apex> raw, after;
-  EXPECT_NEAR(s.shorten(u, raw, after, splice.path ? &splice : nullptr), (pb - pa).norm(), 1e-12);
+  std::vector<Apex> after;
+  EXPECT_NEAR(made_length(mesh, s, flip, after), (pb - pa).norm(), 1e-12);
   EXPECT_EQ(after.size(), 2u);
   // Between neighbouring apices it is the chord of the bend between them.
   Flip one, same;
@@ -461,9 +458,8 @@ TEST(StraightenerSpan, APassSpansTheFlatStretchesAndLeavesTheSaddlesBends) {
   // pass, where flips alone take several.
   testing::Arrays grid = testing::planar_grid(24, 1, 0);
   const TriMesh flat = testing::build(grid);
-  const MeshPoint a = at_xy(flat, 0.1, 0.7), b = at_xy(flat, 0.9, 0.7);
-  const std::vector<int> strip =
-      strip_through(flat, {a, at_xy(flat, 0.3, 0.21), at_xy(flat, 0.52, 0.49), at_xy(flat, 0.71, 0.13), b});
+  MeshPoint a, b;
+  const std::vector<int> strip = two_dips(flat, a, b);
   std::vector<int> marks(flat.triangles.size(), -1);
   Straightener s(flat, marks);
   s.begin(a, b, strip);

@@ -212,15 +212,9 @@ bool Straightener::pass(PathStats* stats) {
       if (back > 1 || ahead > 1) zipper(j, made, back, ahead), slid = made.chain;
     }
     if (!slid && (!try_chord || !walk_chord(j, room, made))) zipper(j, made);
-    if (!overlaps(made.first, made.last)) {
-      std::fill(taken_.begin() + made.first, taken_.begin() + made.last + 1, 1);
-      ++used_;
-    }
+    if (!overlaps(made.first, made.last)) take(made);
   }
-  for (size_t i = 0; i < used_; ++i)
-    std::fill(taken_.begin() + flips_[i].first, taken_.begin() + flips_[i].last + 1, 0);
-  if (stats) stats->walked_faces += walked_;
-  walked_ = 0;
+  end_taking(stats);
   if (used_ == 0) return true;  // all frozen this pass; the next pass finds nothing new
   chosen_.clear();
   for (size_t i = 0; i < used_; ++i) chosen_.push_back(&flips_[i]);
@@ -268,6 +262,18 @@ bool Straightener::pass(PathStats* stats) {
   return true;
 }
 
+void Straightener::take(const Flip& made) {
+  std::fill(taken_.begin() + made.first, taken_.begin() + made.last + 1, 1);
+  ++used_;
+}
+
+void Straightener::end_taking(PathStats* stats) {
+  for (size_t i = 0; i < used_; ++i)
+    std::fill(taken_.begin() + flips_[i].first, taken_.begin() + flips_[i].last + 1, 0);
+  if (stats) stats->walked_faces += walked_;
+  walked_ = 0;
+}
+
 bool Straightener::span_pass(PathStats* stats) {
   if (!options.chords || options.span_min_bends <= 0 || span_failures_ >= options.span_failures) return false;
   const int n = static_cast<int>(path_.strip.size());
@@ -294,14 +300,9 @@ bool Straightener::span_pass(PathStats* stats) {
     Flip& made = flips_[used_];
     made.vertex = -1, made.turn = 0, made.chain = false;
     if (stats) ++stats->chords_tried;
-    if (!chord(jp, jq, room, made, options.span_aims)) continue;
-    std::fill(taken_.begin() + made.first, taken_.begin() + made.last + 1, 1);
-    ++used_;
+    if (chord(jp, jq, room, made, options.span_aims)) take(made);
   }
-  for (size_t i = 0; i < used_; ++i)
-    std::fill(taken_.begin() + flips_[i].first, taken_.begin() + flips_[i].last + 1, 0);
-  if (stats) stats->walked_faces += walked_;
-  walked_ = 0;
+  end_taking(stats);
   if (used_ > 0) {
     chosen_.clear();
     for (size_t i = 0; i < used_; ++i) chosen_.push_back(&flips_[i]);

@@ -224,6 +224,10 @@ class Straightener {
   bool on_left(const Apex& x) const;
   // Whether strip[first..last] touches the faces of this pass's flips so far.
   bool overlaps(int first, int last) const;
+  // Makes `made` (flips_[used_]) one of this pass's flips: its faces are taken.
+  void take(const Flip& made);
+  // Frees the faces this pass's flips took, and counts the chords' walks into stats.
+  void end_taking(PathStats* stats);
   // Whether v is frozen for a path turning by `turn` there: it was frozen at a turn at least as
   // large (a vertex where the path is locally shortest stays so while the turn does not grow).
   bool is_frozen(int v, double turn) const;
