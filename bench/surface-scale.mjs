@@ -457,26 +457,34 @@ own solver looked again from the other end and down a landmark's field for strip
 up for a greedy strip's dependence on where it starts; its search is exact, and now runs once (the coil's curves
 0.925x the time natively, the same curves; the other meshes' guide paths are shorter).`;
 
-const SPANS_NOTE = `Spans (2026-12-07, Straightener::span_pass; ShortestPathOptions::span_min_bends, retry_as_semi_stars).
-Where the time went before (native, 30 curves, build/exp harnesses): the three first-level sides took 52% of the
-coil's curve time and 70% of the knotted tube's; the UV sphere's sides took 54 passes each (median), 6 flips a pass,
-each pass laying out the whole strip of 900 faces. Its faces are long and thin across the way: a semi-star flip moves
-the strip by one row, and the path's few bends slide across the rows a vertex per pass (one 2.3-long side: 172
+const SPANS_NOTE = `Spans and glides (2026-12-07, Straightener::span_pass and glide; ShortestPathOptions::span_min_bends,
+glides). Where the time went before (native, 30 curves, build/exp harnesses): the three first-level sides took 52% of
+the coil's curve time and 70% of the knotted tube's. The UV sphere's sides took 54 passes each (median), 6 flips a
+pass, each pass laying out the whole strip of 900 faces: its faces are long and thin across the way, a semi-star flip
+moves the strip by one row, and the path's few bends slide across the rows a vertex per pass (one 2.3-long side: 172
 passes with about 10 bends at any time, chords seldom tried, as every turn was under chord_min_turn). No locally
-shortest path bends at a vertex whose angle sum is at most 2π (convex or flat), so a run of two or more
-consecutive bends at such vertices is now crossed by one chord from the apex before the run to the one after it,
-aimed again up to 8 times where the surface turned the line (that side: 12 passes). Runs stop at saddle vertices,
-where a path may bend. On the knotted tube a third of the long sides' passes kept nothing: a slide's zipper passed
-its bend's end and failed the whole group, and the next pass flipped the same vertices as semi-stars; the group is
-now retried as semi-stars in the same pass. Native, 40 random curves per mesh, the variants interleaved curve by
-curve (total time, new / old): UV sphere 0.63x (median 8.4 -> 5.0 ms), folded body 0.87x (its limbs are cylinders,
-whose vertices are flat), knotted tube 0.93x, spot_loop2_369k 0.97x, nefertiti 1.00x, coil 1.01x. The curves'
-sides (3 x 40 per mesh, compared one by one) are as long in total, within 0.04%; on nefertiti a few go another
-way round a feature than before, up to 3.5% longer or shorter, as many each way (the guide's own path, straightened
-the new way too, picks the other side). Measured and dropped: spans over every reflex bend (the tubes' long sides
-1.6x and 1.9x the time: the line passes over the tube's inner side, reaches the far apex and is longer); spans only
-across bends under chord_min_turn, or only where the path lies within 1% of the line's length from it (the
-sphere kept 0.83-0.93x); aimed again once as the chords are (0.85x; four times 0.83x, eight 0.52x, 90 sides).`;
+shortest path bends at a vertex whose angle sum is at most 2π (convex or flat), so a run of two or more consecutive
+bends at such vertices is now crossed by one chord from the apex before the run to the one after it, aimed again up
+to 8 times where the surface turned the line (that side: 12 passes). Runs stop at saddle vertices, where a path may
+bend. On the knotted tube the long sides' last 40 passes each moved 3-5 bends by one vertex: bends of up to 0.1 rad
+pressed against rows of saddle vertices (excess 0.0018) that the path does not touch, each flip making the next vertex
+of the row the bend, by its excess smaller (35 passes to fade). Slides (above) handle rows the path bends at, not
+these; a glide works the same sum out in the plane (the layout beyond each vertex passed turned about it by its
+excess) and flips the row up to where the bend fades, at once. Native, 40 random curves per mesh, interleaved curve
+by curve (total time, new / old), spans: UV sphere 0.63x (median 8.4 -> 5.0 ms), folded body 0.88x (its limbs are
+cylinders, whose vertices are flat), knotted tube 0.97x, spot_loop2_369k 0.99x, coil 1.01x, nefertiti 1.03x; then
+glides: knotted tube 0.66x (0.71x the passes), folded body 0.93x, coil 0.98x, UV sphere 1.00x, nefertiti 1.01x,
+spot_loop2_369k 1.045x (as many passes: its glides seldom pass a vertex, and working them out costs angle sums). The
+curves' sides (3 x 40 per mesh, compared one by one) are as long in total, within 0.04%; on nefertiti a few go
+another way round a feature than before, up to 3.5% longer or shorter, as many each way (the guide's own path,
+straightened the new way too, picks the other side). Measured and dropped: spans over every reflex bend (the tubes'
+long sides 1.6x and 1.9x the time: the line passes over the tube's inner side, reaches the far apex and is longer);
+spans only across bends under chord_min_turn, or only where the path lies within 1% of the line's length from it
+(the sphere kept 0.83-0.93x); aimed again once as the chords are (0.85x; four times 0.83x, eight 0.52x, 90 sides);
+a failed group of flips retried as semi-stars in the same pass (a third of the knotted tube's passes kept nothing,
+a slide's zipper having passed its bend's end: 0.95x there alone, 1.00x with glides, which remove those zippers);
+glides over rows of any vertices, convex ones too (nefertiti's sides other local geodesics more often); glides tried
+before chords (spot_loop2_369k 1.27x: a glide took the place of a chord that crosses several rows at once).`;
 
 const CORRIDOR_NOTE = `Refined search in the guide's corridor (2026-12-05, evening; CoarseGuide::corridor,
 ShortestPathOptions::guide_corridor_slack and guide_corridor_edges; built and tested, off by default). Shortest

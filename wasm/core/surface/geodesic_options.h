@@ -18,14 +18,16 @@ struct ShortestPathOptions {
   bool slides = true;            // a bend that would slide along a row of saddle vertices is moved at once
   int slide_min = 4;             // ... when that passes at least this many bends (else a pass moves it)
   int slide_gap = 2;             // a slide passes at most this many untouched vertices between two bends
-  int max_passes = 100000;       // safety bound on phase (iii)'s passes (each flips several vertices)
-  // A pass whose group of flips did not shorten the path tries the group again with its zippers and
-  // chords as plain semi-stars before the largest turn's flip alone (else: that flip alone). On the
-  // knotted tube of the benchmarks the slides of a long path's last bends often pass the bend's end,
-  // and the pass gave up the semi-stars with them (2026-12-07, native, 40 random curves, interleaved:
-  // 0.95x the time; the other meshes within 1.5%; the sides as long, the odd one another local
-  // geodesic, as many shorter as longer; BENCHMARKS.md, "Surface at scale", Spans).
-  bool retry_as_semi_stars = true;
+  // A bend against a row of saddle vertices the path does not touch glides along it at once, to the
+  // vertex where it fades (Straightener::glide), where each flip moved it a vertex (on the knotted
+  // tube of the benchmarks a bend of 0.1 rad against vertices of excess 0.0018 took 35 passes to
+  // fade). Tried where a chord is not. 2026-12-07, native, 40 random curves, interleaved, with and
+  // without: knotted tube 0.66x the time (0.71x the passes), folded body 0.93x, coil 0.98x, UV sphere
+  // 1.00x, nefertiti 1.01x, spot_loop2_369k 1.045x (as many passes: its glides seldom pass a vertex,
+  // and working them out costs angle sums); the same sides. Rows of any vertices (convex ones too,
+  // which a bend always passes): nefertiti's sides other local geodesics more often (-0.07% in total).
+  bool glides = true;
+  int max_passes = 100000;  // safety bound on phase (iii)'s passes (each flips several vertices)
   // A run of at least span_min_bends consecutive bends of the path at vertices that cannot hold one
   // (angle sum at most 2π: on a convex or flat stretch a locally shortest path bends nowhere) is
   // crossed at once by the chord from the apex before the run to the one after it (a span,

@@ -193,7 +193,6 @@ bool Straightener::pass(PathStats* stats) {
       continue;
     }
     if (blocked) continue;
-    made.apex = j, made.run_first = run_first, made.run_last = run_last;
     // A chord spans the faces around the neighbouring apices: look for room before tracing it.
     ChordRoom room{0, n - 1, n - 1};
     int unused;
@@ -211,7 +210,11 @@ bool Straightener::pass(PathStats* stats) {
       const size_t back = slide(j, ahead);
       if (back > 1 || ahead > 1) zipper(j, made, back, ahead), slid = made.chain;
     }
-    if (!slid && (!try_chord || !walk_chord(j, room, made))) zipper(j, made);
+    if (!slid && (!try_chord || !walk_chord(j, room, made))) {
+      int lo, hi;
+      if (options.glides && !no_chain_.contains(made.vertex) && glide(j, lo, hi)) zipper(j, made, 1, 1, lo, hi);
+      if (!made.chain) zipper(j, made);
+    }
     if (!overlaps(made.first, made.last)) take(made);
   }
   end_taking(stats);
@@ -221,27 +224,18 @@ bool Straightener::pass(PathStats* stats) {
   std::sort(chosen_.begin(), chosen_.end(), [](const Flip* x, const Flip* y) { return x->first < y->first; });
   double trial_length = lay_trial(chosen_);
   if (!(trial_length < path_.length - 1e-12 * mesh_.scale) && chosen_.size() > 1) {
-    // Together they did not shorten the path. Their zippers and chords are not tried again (a
-    // semi-star at a reflex vertex shortens the path, a zipper or chord need not; one that does not
-    // kept the group failing pass after pass): the group again with those as the semi-stars they
-    // widened (options.retry_as_semi_stars; a group failed by one zipper that slid too far would
-    // otherwise give up the pass, and the next pass flip the same semi-stars), else the largest
-    // turn's flip alone.
+    // Together they did not shorten the path: fall back to the largest turn alone. The others'
+    // zippers and chords are not tried again (a semi-star at a reflex vertex shortens the path,
+    // a zipper or chord need not; one that does not kept the group failing pass after pass).
     const Flip* best = *std::max_element(chosen_.begin(), chosen_.end(),
                                          [](const Flip* x, const Flip* y) { return x->turn < y->turn; });
-    bool widened = false;
-    for (size_t i = 0; i < used_; ++i) {
-      Flip& f = flips_[i];
-      if ((!f.chain && !f.chord) || (&f == best && !options.retry_as_semi_stars)) continue;
-      if (f.chord) no_chord_.insert(f.vertex);
-      if (f.chain) no_chain_.insert(f.vertex);
-      if (options.retry_as_semi_stars) flip(f.apex, f.turn, f.run_first, f.run_last, f), widened = true;
+    for (const Flip* f : chosen_) {
+      if (f == best) continue;
+      if (f->chord) no_chord_.insert(f->vertex);
+      if (f->chain) no_chain_.insert(f->vertex);
     }
-    if (widened) trial_length = lay_trial(chosen_);
-    if (!(trial_length < path_.length - 1e-12 * mesh_.scale)) {
-      chosen_.assign(1, best);
-      trial_length = lay_trial(chosen_);
-    }
+    chosen_.assign(1, best);
+    trial_length = lay_trial(chosen_);
   }
   if (keep_trial(trial_length)) {
     if (stats) {
@@ -460,7 +454,7 @@ bool Straightener::flip(size_t j, double turn, int first, int last, Flip& flip) 
 // replaces the strip faces around all the blocking vertices by the faces on their other side; the
 // pass keeps it only if the path gets shorter, otherwise v gets the single flip from then on
 // (no_chain_).
-void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead) {
+void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead, int lo, int hi) {
   const int v = path_.apices[j].vertex, n = static_cast<int>(path_.strip.size());
   if (n < 3 || no_chain_.contains(v)) return;
   const Portal& own = path_.unfolded.portals[std::clamp(path_.apices[j].portal, 0, n - 2)];
@@ -477,10 +471,12 @@ void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead) {
   };
   int first = flip.first, last = flip.last;
   pivots_.clear();
-  // (A slide's: every side vertex after apex j-back and before apex j+ahead.)
-  const int before = path_.apices[j - back].portal;
+  // (A slide's: every side vertex after apex j-back and before apex j+ahead; a glide's: every one
+  // after portal lo and before portal hi.)
+  const int before = lo >= 0 ? lo : path_.apices[j - back].portal;
   const Apex& after = path_.apices[j + ahead];
-  for (int i = first - 1; i > before && (back > 1 || blocks(i));) {  // vertices before v, nearest first
+  const bool all_before = back > 1 || lo >= 0, all_after = ahead > 1 || hi >= 0;
+  for (int i = first - 1; i > before && (all_before || blocks(i));) {  // vertices before v, nearest first
     const int c = side_vertex(i);
     while (i > before + 1 && side_vertex(i - 1) == c) --i;
     pivots_.push_back(c);
@@ -488,7 +484,8 @@ void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead) {
   }
   std::reverse(pivots_.begin(), pivots_.end());  // in strip order
   pivots_.push_back(v);
-  for (int i = last; i < std::min(n - 1, after.portal) && (ahead > 1 ? side_vertex(i) != after.vertex : blocks(i));) {
+  const int until = hi >= 0 ? std::min(hi, after.portal) : after.portal;
+  for (int i = last; i < std::min(n - 1, until) && (all_after ? side_vertex(i) != after.vertex : blocks(i));) {
     // (vertices after v)
     const int c = side_vertex(i);
     while (i + 1 < n - 1 && side_vertex(i + 1) == c) ++i;
@@ -538,6 +535,23 @@ void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead) {
 // Slide
 // =================================================================================================
 
+bool Straightener::turn_about(int x, const Vec2& c, double side, PlaneMotion& m) {
+  const double e = angle_sum(x) - 2 * kPi;
+  if (std::isnan(e)) return false;
+  const double a = side < 0 ? e : -e, ca = std::cos(a), sa = std::sin(a);
+  const Vec2 t = c - Vec2(ca * c.x() - sa * c.y(), sa * c.x() + ca * c.y());
+  PlaneMotion out;
+  out.c = m.c * ca - m.s * sa, out.s = m.s * ca + m.c * sa;
+  out.t = m(t);
+  m = out;
+  return true;
+}
+
+bool Straightener::bends_past(int x, double side, const Vec2& in, const Vec2& out) {
+  const double c = cross(in, out);
+  return c * side > 0 && !std::isnan(angle_sum(x)) && !straight_through(x, std::atan2(std::abs(c), in.dot(out)));
+}
+
 bool Straightener::holds_no_bend(int v) { return angle_sum(v) < 2 * kPi + 1e-9; }  // (NaN: false)
 
 double Straightener::angle_sum(int v) {
@@ -559,25 +573,11 @@ size_t Straightener::slide(size_t j, size_t& ahead) {
   const Apex& v = path_.apices[j];
   const double side = cross(v.pos - path_.apices[j - 1].pos, path_.apices[j + 1].pos - v.pos);  // < 0: a right turn
   const bool left = on_left(v);
-  auto side_vertex = [&](int i) {
-    return left ? path_.unfolded.portals[i].left_vertex : path_.unfolded.portals[i].right_vertex;
-  };
-  auto side_pos = [&](int i) { return left ? path_.unfolded.left(i) : path_.unfolded.right(i); };
+  auto side_vertex = [&](int i) { return this->side_vertex(left, i); };
+  auto side_pos = [&](int i) { return this->side_pos(left, i); };
   const int at = std::clamp(v.portal, 0, np - 1);
   if (side_vertex(at) != v.vertex) return 1;
-  // m followed by the turn about vertex x (at c) by its angle excess (the way that opens a bend in
-  // v's direction); false for a boundary vertex.
-  auto turn_about = [&](int x, const Vec2& c, PlaneMotion& m) {
-    const double e = angle_sum(x) - 2 * kPi;
-    if (std::isnan(e)) return false;
-    const double a = side < 0 ? e : -e, ca = std::cos(a), sa = std::sin(a);
-    const Vec2 t = c - Vec2(ca * c.x() - sa * c.y(), sa * c.x() + ca * c.y());
-    PlaneMotion out;
-    out.c = m.c * ca - m.s * sa, out.s = m.s * ca + m.c * sa;
-    out.t = m(t);
-    m = out;
-    return true;
-  };
+  auto turn_about = [&](int x, const Vec2& c, PlaneMotion& m) { return this->turn_about(x, c, side, m); };
   // Whether apex d can be passed (only a frozen bend on v's side: the others are flips of their own).
   auto may_pass = [&](size_t d) {
     if (d == 0 || d + 1 >= count) return false;  // (also d "below" 0: j - k wraps round)
@@ -588,10 +588,7 @@ size_t Straightener::slide(size_t j, size_t& ahead) {
   // Whether the path, coming into apex d along `in` and leaving along `out`, bends there in v's
   // direction by more than d's excess lets it (d is passed too).
   auto passed = [&](size_t d, const Vec2& in, const Vec2& out) {
-    const double c = cross(in, out);
-    if (!(c * side > 0)) return false;
-    const double sum = angle_sum(path_.apices[d].vertex);
-    return !std::isnan(sum) && !straight_through(path_.apices[d].vertex, std::atan2(std::abs(c), in.dot(out)));
+    return bends_past(path_.apices[d].vertex, side, in, out);
   };
   // From v along its side of the strip (step -1: back, +1: ahead), turning `m` about every vertex
   // passed; `reached(d)` decides at each apex d = j + step·k whether the slide passes it as well.
@@ -638,6 +635,36 @@ size_t Straightener::slide(size_t j, size_t& ahead) {
   });
   if (back + ahead - 2 < least) return ahead = 1;
   return back;
+}
+
+bool Straightener::glide(size_t j, int& lo, int& hi) {
+  lo = hi = -1;
+  const int np = static_cast<int>(path_.unfolded.portals.size());
+  const Apex &v = path_.apices[j], &p = path_.apices[j - 1], &q = path_.apices[j + 1];
+  const double side = cross(v.pos - p.pos, q.pos - v.pos);  // < 0: a right turn
+  const bool left = on_left(v);
+  const int at = std::clamp(v.portal, 0, np - 1);
+  if (side_vertex(left, at) != v.vertex || holds_no_bend(v.vertex)) return false;
+  // From v along its side (step -1: back towards p, +1: ahead towards q) over side vertices the path
+  // does not touch, turning the layout beyond each vertex passed about it: the portal of the first
+  // vertex where the path would no longer bend (the glide stops before it), or -1 when it passes
+  // none or runs into the neighbouring apex (a slide's, or nothing to do).
+  auto run = [&](int step) {
+    PlaneMotion m;
+    int i = at, x = v.vertex, passed = 0;
+    Vec2 c = side_pos(left, at);
+    while (turn_about(x, c, side, m)) {
+      while (i >= 0 && i < np && side_vertex(left, i) == x) i += step;
+      if (i < 0 || i >= np || (step < 0 ? i <= p.portal : i >= q.portal)) return -1;
+      x = side_vertex(left, i), c = side_pos(left, i);
+      const Vec2 here = step < 0 ? c : m(c);  // (ahead, x lies beyond the vertices passed)
+      if (holds_no_bend(x) || !bends_past(x, side, here - p.pos, m(q.pos) - here)) return passed > 0 ? i : -1;
+      ++passed;
+    }
+    return -1;
+  };
+  lo = run(-1), hi = run(+1);
+  return lo >= 0 || hi >= 0;
 }
 
 // =================================================================================================

@@ -14,8 +14,9 @@
 // vertex per pass. A fifth, the span (`span_pass`), is a chord across a run of bends at once where
 // none of them can stay (vertices of angle sum at most 2π: convex or flat), from the apex before the
 // run to the one after it: across long thin faces the flips move the strip a row at a time, and
-// the bends slide across the rows a vertex per pass. A pass (`pass`) tries the spans first, else
-// flips every reflex vertex whose faces do not touch
+// the bends slide across the rows a vertex per pass. A sixth, the glide (`glide`), makes a zipper
+// along a row of saddle vertices the path does not touch, to where a bend pressed against it fades.
+// A pass (`pass`) tries the spans first, else flips every reflex vertex whose faces do not touch
 // another's and keeps the flips (`apply`) if the path gets shorter. A vertex is frozen up to the
 // turn the path made there (looked at again when the path turns more there, as after its
 // neighbours' flips), so that the path ends locally shortest: at every bend its angle on the far
@@ -66,8 +67,6 @@ struct Flip {
   std::vector<int> other;                 // the faces that replace the strip's between first and last
   std::vector<std::array<Vec2, 3>> laid;  // a chord's: where its trace laid `other` (the strip's layout)
   bool chain = false, chord = false;      // a zipper's / a chord's (else a semi-star's)
-  size_t apex = 0;                        // the apex it flips, and its vertex's run in the strip
-  int run_first = 0, run_last = 0;        // (the semi-star's first and last, before a zipper or chord)
 };
 
 // The strip faces a chord at apex j may replace: from the first face around apex j-1 (p_first) to
@@ -163,7 +162,7 @@ class Straightener {
   // with it. Leaves `flip` as it is when no such vertex exists, or v's zipper did not shorten the
   // path before. With `back` or `ahead` above 1 (a slide's), every boundary vertex on v's side
   // between apex j-back and apex j+ahead is flipped.
-  void zipper(size_t j, Flip& flip, size_t back = 1, size_t ahead = 1);
+  void zipper(size_t j, Flip& flip, size_t back = 1, size_t ahead = 1, int lo = -1, int hi = -1);
   // The slide of apex j: how many apices back (the return value) and ahead the path leaves the
   // boundary vertices next to v once v is flipped. A path pressed against a row of saddle vertices
   // (each with angle sum 2π + e, e > 0) may turn by up to e at each of them and stay locally
@@ -178,6 +177,16 @@ class Straightener {
   // the last). Likewise ahead, from the apex the slide leaves. 1 and 1: no slide, also when it
   // would pass fewer than options.slide_min bends.
   size_t slide(size_t j, size_t& ahead);
+  // The glide of apex j: a bend v (a saddle) against a row of saddle vertices the path does not
+  // touch (between v and its neighbouring apices, on v's side). Flipping v makes the next of them the
+  // bend, by that vertex's excess smaller, and so on: the bend glides along the row a vertex per pass
+  // until it fades (BENCHMARKS.md, "Surface at scale", Spans and glides). Worked out in the plane as
+  // the slide's: the portals lo (back towards apex j-1) and hi (ahead towards apex j+1) of the first
+  // vertices where the path, the layout beyond each vertex passed turned about it by its excess,
+  // would no longer bend by more than their excess (or that are not saddles); the side vertices
+  // strictly between them are flipped with v (zipper). -1 for a side that passes none or runs into
+  // the neighbouring apex; false when both are.
+  bool glide(size_t j, int& lo, int& hi);
   // The chord flip of apex j: the faces along the straight line from apex j-1 (p) to apex j+1 (q),
   // followed across the mesh from p (aimed once more where the surface turned the line), then
   // around q to its strip faces. False (flip unusable) when the line meets a boundary or a vertex,
@@ -235,6 +244,18 @@ class Straightener {
   void freeze(int v, double turn, PathStats* stats);
   // The angle sum around v (cached in angle_sums_), NaN for a boundary vertex.
   double angle_sum(int v);
+  // The vertex and layout position of portal i's end on the left (or right) side of the strip.
+  int side_vertex(bool left, int i) const {
+    return left ? path_.unfolded.portals[i].left_vertex : path_.unfolded.portals[i].right_vertex;
+  }
+  const Vec2& side_pos(bool left, int i) const { return left ? path_.unfolded.left(i) : path_.unfolded.right(i); }
+  // Slides and glides: m followed by the turn about vertex x (laid at c) by its angle excess, the
+  // way that opens a bend of a path turning to `side`'s sign (< 0: right); false for a boundary
+  // vertex.
+  bool turn_about(int x, const Vec2& c, double side, PlaneMotion& m);
+  // Whether a path coming into vertex x along `in` and leaving along `out` bends there to `side`'s
+  // sign by more than x's excess lets it (it is passed: flipped with the bend).
+  bool bends_past(int x, double side, const Vec2& in, const Vec2& out);
   // Whether apex j's vertex is frozen for the path's turn there, told by the turn's cosine alone
   // (false: not told; `is_frozen` on the turn decides). Most apices of a long path are frozen, and
   // the pass then needs no atan2 for them.
