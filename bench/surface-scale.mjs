@@ -477,7 +477,13 @@ glides: knotted tube 0.66x (0.71x the passes), folded body 0.93x, coil 0.98x, UV
 spot_loop2_369k 1.045x (as many passes: its glides seldom pass a vertex, and working them out costs angle sums). The
 curves' sides (3 x 40 per mesh, compared one by one) are as long in total, within 0.04%; on nefertiti a few go
 another way round a feature than before, up to 3.5% longer or shorter, as many each way (the guide's own path,
-straightened the new way too, picks the other side). Measured and dropped: spans over every reflex bend (the tubes'
+straightened the new way too, picks the other side). On meshes not tuned on (build/exp harness, 40 random curves,
+spans and glides against neither, interleaved): the graded disc of "Long thin faces" above 0.43x the time over 100
+curves and its worst 110 -> 6.7 ms (the bends that moved across hundreds of rings a pass at a time are spanned); a
+cylinder of 3000 x 40 quads (faces 6:1 along it) 0.75x; the surface of a cube, 150 x 150 quads a side (flat) 0.69x;
+that cube with its vertices moved by 0.2 edge lengths 1.06x; ../shared/data's fertility 1.01x, stanford_bunny 1.08x
+and mountain 1.06x (glides 1.05x of it: on scans most glides pass no vertex, and the ones that do change which flips
+come first), the sides as long in total within 0.03% on each. Measured and dropped: spans over every reflex bend (the tubes'
 long sides 1.6x and 1.9x the time: the line passes over the tube's inner side, reaches the far apex and is longer);
 spans only across bends under chord_min_turn, or only where the path lies within 1% of the line's length from it
 (the sphere kept 0.83-0.93x); aimed again once as the chords are (0.85x; four times 0.83x, eight 0.52x, 90 sides);
