@@ -490,7 +490,12 @@ spans only across bends under chord_min_turn, or only where the path lies within
 a failed group of flips retried as semi-stars in the same pass (a third of the knotted tube's passes kept nothing,
 a slide's zipper having passed its bend's end: 0.95x there alone, 1.00x with glides, which remove those zippers);
 glides over rows of any vertices, convex ones too (nefertiti's sides other local geodesics more often); glides tried
-before chords (spot_loop2_369k 1.27x: a glide took the place of a chord that crosses several rows at once).`;
+before chords (spot_loop2_369k 1.27x: a glide took the place of a chord that crosses several rows at once); spans of
+single bends (span_min_bends 1: the folded body 1.03x, nefertiti 1.05x) and chords at every bend at a flat or convex
+vertex whatever its turn (the folded body and the UV sphere 1.1x), for the folded body's remaining tail (single bends
+of 0.005-0.01 rad at the limbs' flat vertices, sliding a vertex a pass between saddle bends); glides only where the
+turn is 3 or 6 times the excess (the scans as before: their cost is in which flips come first, not in working the
+glides out); each aim again required to halve the last miss (the UV sphere 0.81x instead of 0.63x).`;
 
 const CORRIDOR_NOTE = `Refined search in the guide's corridor (2026-12-05, evening; CoarseGuide::corridor,
 ShortestPathOptions::guide_corridor_slack and guide_corridor_edges; built and tested, off by default). Shortest
