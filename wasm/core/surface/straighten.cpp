@@ -168,11 +168,15 @@ bool Straightener::pass(PathStats* stats) {
     if (turn > 1e-9 && !is_frozen(path_.apices[j].vertex, turn)) order_.emplace_back(-turn, j);
   }
   if (order_.empty()) return false;
+  // The same apices in path order, for windows and spans.
+  candidates_.clear();
+  for (const auto& entry : order_) candidates_.push_back(entry.second);
+  std::sort(candidates_.begin(), candidates_.end());
+  if (taken_.size() < static_cast<size_t>(n)) taken_.resize(n, 0);
   if (!in_window_ && windowed_pass(stats)) return true;
   if (span_pass(stats)) return true;
   std::sort(order_.begin(), order_.end());
   used_ = 0;
-  if (taken_.size() < static_cast<size_t>(n)) taken_.resize(n, 0);
   for (const auto& [neg_turn, j] : order_) {
     // A vertex whose faces a flip of this pass already changes cannot flip in it; it is only
     // frozen (as `flip` would) if the path through it is locally shortest.
@@ -271,16 +275,16 @@ void Straightener::end_taking(PathStats* stats) {
 bool Straightener::span_pass(PathStats* stats) {
   if (!options.chords || options.span_min_bends <= 0 || span_failures_ >= options.span_failures) return false;
   const int n = static_cast<int>(path_.strip.size());
-  // The reflex apices whose vertex cannot hold a bend of the path, in path order.
-  candidates_.clear();
-  for (const auto& entry : order_)
-    if (holds_no_bend(path_.apices[entry.second].vertex)) candidates_.push_back(entry.second);
-  std::sort(candidates_.begin(), candidates_.end());
-  if (taken_.size() < static_cast<size_t>(n)) taken_.resize(n, 0);
+  // Runs of consecutive reflex apices (candidates_) whose vertices cannot hold a bend of the path.
+  auto spannable = [&](size_t k) { return holds_no_bend(path_.apices[candidates_[k]].vertex); };
   used_ = 0;
   for (size_t r = 0; r < candidates_.size();) {
-    size_t e = r + 1;  // the run of consecutive apices candidates_[r .. e-1]
-    while (e < candidates_.size() && candidates_[e] == candidates_[e - 1] + 1) ++e;
+    if (!spannable(r)) {
+      ++r;
+      continue;
+    }
+    size_t e = r + 1;  // the run candidates_[r .. e-1]
+    while (e < candidates_.size() && candidates_[e] == candidates_[e - 1] + 1 && spannable(e)) ++e;
     const size_t jp = candidates_[r] - 1, jq = candidates_[e - 1] + 1;
     r = e;
     if (jq - jp - 1 < static_cast<size_t>(options.span_min_bends)) continue;
@@ -332,9 +336,6 @@ bool Straightener::windowed_pass(PathStats* stats) {
     return false;
   }
   if (options.window_min_faces <= 0 || n < options.window_min_faces) return false;
-  candidates_.clear();
-  for (const auto& entry : order_) candidates_.push_back(entry.second);
-  std::sort(candidates_.begin(), candidates_.end());
   const size_t end = path_.apices.size() - 1;
   auto candidate = [&](size_t j) { return std::binary_search(candidates_.begin(), candidates_.end(), j); };
   // A window from apex ja to apex jb holds the faces from the last around ja to the first around jb.

@@ -207,7 +207,7 @@ class Straightener {
   double lay_trial(const std::vector<const Flip*>& chosen);
   // Makes the trial strip the strip if its path (`trial_length` long) is shorter.
   bool keep_trial(double trial_length);
-  // A pass that straightens the windows around its reflex vertices (order_) to the end, each on its
+  // A pass that straightens the windows around its reflex vertices (candidates_) to the end, each on its
   // own, and keeps their strips if the path gets shorter. False (nothing done) when the strip is
   // shorter than options.window_min_faces or the windows would cover more than half of it.
   bool windowed_pass(PathStats* stats);
@@ -215,7 +215,7 @@ class Straightener {
   // end on their own; `flip` replaces them by the result. False when the path there did not get
   // shorter.
   bool straighten_window(size_t ja, size_t jb, int first, int last, Flip& flip, PathStats* stats);
-  // A pass of spans (pass() tries it on its reflex apices, order_): for each run of at least
+  // A pass of spans (pass() tries it on its reflex apices, candidates_): for each run of at least
   // options.span_min_bends consecutive ones at vertices that hold no bend (holds_no_bend), the
   // chord from the apex before the run to the one after it (chord(jp, jq)), all kept together if
   // they shorten the path. False (nothing kept) when there was none or they did not shorten it;
@@ -296,6 +296,7 @@ class Straightener {
   size_t used_ = 0;
   std::vector<uint8_t> taken_;  // per strip index: 1 where this pass's flips so far change the strip
   std::vector<std::pair<double, size_t>> order_;
+  std::vector<size_t> candidates_;  // order_'s apices in path order (windows and spans read them)
   std::vector<const Flip*> chosen_;
   // A zipper's vertices and faces; a chord's walk: the faces it entered, where it laid them, and
   // the edge it left each face by along the line.
@@ -315,7 +316,6 @@ class Straightener {
   };
   std::vector<Window> windows_;
   std::vector<Flip> window_flips_;
-  std::vector<size_t> candidates_;
   Path outer_;
   bool in_window_ = false, windows_off_ = false;
   int span_failures_ = 0;  // span passes of this path that did not shorten it
