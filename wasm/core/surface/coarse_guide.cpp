@@ -78,6 +78,7 @@ CoarseGuide::CoarseGuide(const TriMesh& fine, TriMesh coarse, std::vector<int> c
   // random curves, against weight 3: the coil's 1.05x the time, the folded body's 1.18x, the knotted
   // tube's 1.02x; curves -0.09%, -0.49% and -0.13% in total length).
   own.dual_heuristic_weight = 1, own.landmark_weight = 1, own.dual_stretch_weight = 0;
+  own.refined_landmark_share = 0;  // (its paths are kDual ones)
   // Landmarks on every guide component of 1024 faces or more (a sixteenth of the mesh's threshold):
   // without them the exact search on the knotted tube's 9k-face guide flooded 25 times its path's
   // faces (2026-12-05, 40 random curves, native: knotted tube 426 -> 382 ms, nefertiti 96 -> 88 ms,

@@ -75,10 +75,11 @@ DualSearch::DualSearch(const TriMesh& mesh, const ShortestPathOptions& options)
   }
   landmarks_ = Landmarks(mesh, centroids_, options.landmarks, options.landmark_min_faces);
   // (not measured where it would not be used: the coarse guide's exact search)
-  if (options.dual_stretch_weight > 0) {
-    dual_stretch_ = measure_stretch();
+  const bool refined_share = refined_landmark_scale_ <= 0 && options.refined_landmark_share > 0 && !landmarks_.empty();
+  if (options.dual_stretch_weight > 0 || refined_share) dual_stretch_ = measure_stretch();
+  if (options.dual_stretch_weight > 0)
     dual_weight_ = std::max(dual_weight_, options.dual_stretch_weight * dual_stretch_);
-  }
+  if (refined_share) refined_landmark_scale_ = options.refined_landmark_share / dual_stretch_;
 }
 
 double DualSearch::measure_stretch() {
@@ -327,11 +328,15 @@ bool DualSearch::initial_strip(const MeshPoint& a, const MeshPoint& b, std::vect
   const Vec3 pb = eval_position(mesh_, b) - origin_;
   const Eigen::Vector3f pbf = pb.cast<float>();
   const double weight = dual ? dual_weight_ : 1.0;
-  // The landmark term (landmarks.h): admissible on the dual graph; scaled down on the refined one.
+  // The landmark term (landmarks.h): admissible on the dual graph; scaled down on the refined one
+  // (ShortestPathOptions::refined_landmark_share), and there used only where it bounds the way from
+  // a's face farther than space does (a term of weight 0 is not computed at all).
   const double landmark_weight = dual ? landmark_weight_ : refined_landmark_scale_;
-  // (A landmark term of weight 0, the refined search's default, is not computed at all.)
-  const bool use_landmarks = !landmarks_.empty() && landmark_weight > 0;
-  if (use_landmarks) landmarks_.set_target(targets.data(), static_cast<int>(targets.size()));
+  bool use_landmarks = !landmarks_.empty() && landmark_weight > 0;
+  if (use_landmarks) {
+    landmarks_.set_target(targets.data(), static_cast<int>(targets.size()));
+    if (!dual) use_landmarks = landmark_weight * landmarks_.bound(sources.front()) > (pa - pb).norm();
+  }
   // The A* term of a node at p on face f (its own face, or one of its edge's): the larger of the
   // Euclidean and the landmark bounds, the latter moved from f's centroid to p.
   auto heuristic = [&](const Vec3& p, int f) {

@@ -91,7 +91,8 @@ class DualSearch {
   // built: from 32 faces spread over the mesh, a Dijkstra search over the centroids out to 20 times
   // the face's size (the square root of its area); of the faces it reaches 10 to 20 sizes away in
   // space, the 90th percentile of (graph distance / distance in space); 1 when none is reached or
-  // options.dual_stretch_weight is 0 (then it is not measured).
+  // neither options.dual_stretch_weight nor (with landmarks) options.refined_landmark_share asks
+  // for it (then it is not measured).
   // Near-regular faces measure about 1.3-1.8, long thin ones far more (a 7:1 quad split in two, 4.5
   // along its short side).
   double dual_stretch() const { return dual_stretch_; }

@@ -103,8 +103,8 @@ struct ShortestPathOptions {
   double guide_walk_aspect = 3;
   // A kRefined search between ends as far apart (coarse_guide_faces) keeps to the guide's corridor of
   // ways at most this much longer than its shortest (CoarseGuide::corridor; 0: the whole mesh). The
-  // search's Euclidean term knows nothing of the surface, and the refined graph has no admissible
-  // landmark term, so on a tube it floods the tube between the ends and past them. The slack covers
+  // search's Euclidean term knows nothing of the surface, and its landmark term (refined_landmark_share)
+  // bounds only part of the way, so on a tube it floods the tube between the ends. The slack covers
   // how far the guide's lengths stray from the mesh's: 2026-12-05, native, random vertex pairs,
   // against the whole mesh's search (interleaved; "worse": more than 0.5% longer than its path):
   // 0.04: knotted tube 0.74x (80 pairs, none worse), coil 0.63x (20 pairs); 0.02: coil 0.6x, nefertiti 0.75x,
@@ -123,10 +123,20 @@ struct ShortestPathOptions {
   double guide_corridor_edges = 1;
   // Landmark lower bounds (landmarks.h) in components of at least landmark_min_faces faces: the A* term
   // is the larger of the Euclidean one and the landmark one, weighted by landmark_weight in the kDual
-  // search (where the bound is admissible) and by refined_landmark_scale in the kRefined one. There
-  // dual-graph distances overestimate the refined graph's (by up to a third on the coil of the
-  // benchmarks), so no scale is both admissible and useful: 0 (the default) leaves the refined search
-  // admissible (never longer than the graph's shortest path); 0.85 made it ~40 times cheaper on that
+  // search (where the bound is admissible) and, in the kRefined one, by refined_landmark_scale when
+  // that is above 0, else by refined_landmark_share / DualSearch::dual_stretch(). A landmark bound is
+  // one on the dual graph's distance, which runs longer than the surface's by about the graph's
+  // stretch, so the bound divided by the stretch is one on the surface's distance, and so on the
+  // refined graph's (never shorter than the surface's); the stretch is a 90th percentile over short
+  // distances (where the graph's zigzag weighs most), and the share keeps a margin below it. The term
+  // is used only in a search whose ends it bounds farther apart than space does (on a tube, a coil,
+  // a fold; elsewhere it seldom beats the Euclidean term, and its look-ups cost 7-8% of the search).
+  // 2026-12-07, native, 40 random vertex pairs per mesh against the Euclidean term alone, interleaved
+  // (">0.5%": paths more than 0.5% longer than its): share 0.75: knotted tube 0.84x the time (none
+  // >0.5%, 2 shorter), coil 0.84x (none), folded body 0.98x (none, 6 shorter), the meshes whose
+  // searches leave it out within 1%; share 1: knotted tube 0.71x but 4 of 40 >0.5% (up to 1.13%),
+  // folded body 0.80x and one 0.53% longer (both without the gate). Before: an absolute
+  // scale of 0.85 made the search ~40 times cheaper on that
   // coil (2026-12-02, before windows) but only 90% of nefertiti's paths stayed within
   // 0.5% of the exact distance (BENCHMARKS.md, "Surface at scale"). Also tried for the refined
   // search (2026-12-02, on the 384k-triangle coil): landmark distances on a "collapsed" refined graph
@@ -139,11 +149,12 @@ struct ShortestPathOptions {
   // face's vertex steepens its neighbours'); a corridor around the dual graph's shortest path misses
   // the geodesic on grid-like meshes (dual shortest paths wander across a band of equal-length
   // staircases), giving longer paths.
-  int landmarks = 8;                  // landmarks per mesh (2 bytes per face each); 0: none
-  int landmark_min_faces = 16384;     // smaller components get none: they search fast enough on the
-                                      // Euclidean term
-  double landmark_weight = 2;         // kDual (as dual_heuristic_weight: a greedy search)
-  double refined_landmark_scale = 0;  // kRefined
+  int landmarks = 8;                     // landmarks per mesh (2 bytes per face each); 0: none
+  int landmark_min_faces = 16384;        // smaller components get none: they search fast enough on the
+                                         // Euclidean term
+  double landmark_weight = 2;            // kDual (as dual_heuristic_weight: a greedy search)
+  double refined_landmark_scale = 0;     // kRefined: an absolute weight (tests), overrides the share
+  double refined_landmark_share = 0.75;  // kRefined: the weight as a share of 1 / dual_stretch()
 };
 
 // Counters for tests and benchmarks, summed over the calls they are passed to.

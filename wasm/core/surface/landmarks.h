@@ -8,7 +8,8 @@
 // the surface.
 //
 // Here the graph is the dual graph (face centroids, linked across shared edges by straight segments),
-// the one SearchGraph::kDual searches: the bound is admissible there. Landmarks go to the largest
+// the one SearchGraph::kDual searches: the bound is admissible there (the kRefined search divides it
+// by the graph's stretch, ShortestPathOptions::refined_landmark_share). Landmarks go to the largest
 // connected components (of at least a given size; a scan's specks of debris get none, as searches
 // there end at once): in each of them first the face farthest from its first face, then by
 // farthest-point sampling over them all (each the face farthest from those chosen so far). Distances are quantised to
