@@ -497,6 +497,42 @@ of 0.005-0.01 rad at the limbs' flat vertices, sliding a vertex a pass between s
 turn is 3 or 6 times the excess (the scans as before: their cost is in which flips come first, not in working the
 glides out); each aim again required to halve the last miss (the UV sphere 0.81x instead of 0.63x).`;
 
+const REFINED_LANDMARKS_NOTE = `Landmarks in the refined search (2026-12-07, ShortestPathOptions::refined_landmark_share). A landmark
+bounds the dual graph's distance between two faces from below, and that distance runs longer than the surface's by
+about the graph's stretch (DualSearch::dual_stretch, the 90th percentile of graph over straight distance 10-20 face
+sizes apart: 1.3-1.8 on near-regular faces, 5.2 on the knotted tube's): the bound divided by the stretch bounds the
+surface's distance, and so the refined graph's, which is never shorter. The refined search now takes the larger of
+the Euclidean term and 0.75 times that (a margin: the stretch is a percentile, measured where the graph's zigzag
+weighs most), and only in a search whose ends the landmarks bound farther apart than space does (on a tube, a coil,
+a fold; elsewhere the term seldom wins and its look-ups cost 7-8% of the search). Native, 40 random vertex pairs a
+mesh against the Euclidean term alone, interleaved: knotted tube 0.84x the time (nodes 0.81x), coil 0.84x, folded
+body 0.98x, the Stanford dragon (unseen, run locally) 0.97x; no path more than 0.5% longer, a few shorter (another
+strip straightens further); nefertiti, both spots and the UV sphere within 1%, node for node the same searches. A
+share of 1 (the stretch with no margin): the knotted tube 0.71x but 4 of 40 paths 0.5-1.1% longer, the folded body
+0.80x and one 0.53% longer. The tests hold the term below the straight distance on a flat sheet of 8:1 faces,
+where the share taken as an absolute weight overestimates.`;
+
+const LATE_NOTE = `Measured and dropped later on 2026-12-07 (native, build/exp harnesses, 30-40 random curves, interleaved;
+none of it changed the code). On the Stanford dragon (871,414 triangles, unseen, run locally) random curves took
+median 8.87 ms, p90 15.5, p99 46.7 (wasm, 100 curves, seed 3): the three first-level sides 58% of the time, 33
+passes a side of 600 faces, each flipping 10-20 of ~25 bends, the straightening 77% of all. Its guided strips lie
+within 3% of the final length (the other meshes' 1-2.5%): the passes sweep the bumps of the scan, not a wrong side.
+Tried: seeding long paths through known ones where the swept area is at most 16 faces wide along them (not only 64
+faces in all): the coil 0.83x, but nefertiti's curves 6.5% longer in total, the noisy spot's 12.6% (up to 76% for
+one curve: seeded paths settle on longer local geodesics among the details), and the folded body's seeded limb
+path twice the length of the searched one; a greedy search of twice the straight distance's faces checking such
+paths for a shorter way caught the limb but not the details, and cost the coil back to 0.87-0.96x. Checking every
+seeded path so: nefertiti's curves 0.12% shorter, the noisy spot's 0.17%, for 1.1-1.2x the time. Turning angles at
+the pieces' joints as the swept area's estimate: no decisions changed. Stopping the straightening once 4-8 passes
+together shorten a path by less than 1e-5 to 1e-6 of its length (simulated on pass logs): 0-20% of the passes,
+paths up to 2e-4 longer, nothing on the coil. The guide's own straightening cut to 4 or 16 passes: 1.01x and 0.99x
+on the coil (the fine passes make up for it); its search greedy (weight 1.5 or 3): 1.12-1.26x, sides up to 7.5%
+longer. The refined search's records reserved at the last search's size (no regrowth): 0.98x natively, within the
+noise in wasm (knotted tube pairs); WebAssembly bulk memory and non-trapping float conversions: curves 0.98-0.99x
+in wasm, shortest paths unchanged. On the dragon: chord_min_turn 0.1 0.94x, 0.2 0.95x, 0.01 1.09x; guide from 12
+guide edges 0.96x, 48 1.12x; both 0.1 and 12: 0.91x, but nefertiti's curves 0.26% shorter and one noisy-spot curve
+45% longer (another local geodesic at the first level): not taken.`;
+
 const CORRIDOR_NOTE = `Refined search in the guide's corridor (2026-12-05, evening; CoarseGuide::corridor,
 ShortestPathOptions::guide_corridor_slack and guide_corridor_edges; built and tested, off by default). Shortest
 paths search the refined graph, whose A* term is Euclidean (no landmark term is admissible there): on the coil it
@@ -729,6 +765,8 @@ ${THIN_NOTE}
 
 ${SPANS_NOTE}
 
+${LATE_NOTE}
+
 Work per curve, median / p99 over the curves (SurfaceMeshHandle counters, summed over a curve's
 shortest paths): paths searched, of those the ones whose strips followed the coarse guide, paths seeded
 (straightened through known paths), graph nodes the
@@ -767,6 +805,8 @@ ${geo.join('\n')}
 
 ${geoNote(m)}
 
+${REFINED_LANDMARKS_NOTE}
+
 ${SEARCH_NOTE}
 
 ${CORRIDOR_NOTE}
@@ -779,5 +819,5 @@ function geoNote(m) {
   const slow = timed.filter((r) => r.geodesics.ours.total_ms > r.geodesics.flipout.total_ms);
   const exact = timed.filter((r) => r.geodesics.ours.within_pct != null);
   const better = exact.filter((r) => r.geodesics.ours.within_pct >= r.geodesics.flipout.within_pct);
-  return `Ours is slower than flipOut on ${slow.length} of ${timed.length} meshes${slow.length ? ` (${slow.map((r) => r.name).join(', ')}: on a thin tube the A* term, Euclidean, knows nothing of the surface, and the search floods the tube between the ends (the guide's corridor, below, is not yet accurate enough to bound it); the landmark term is not admissible for the refined search, ShortestPathOptions::refined_landmark_scale says why)` : ''}, and at least as often within 0.5% of the exact distance on ${better.length} of ${exact.length} (not on ${exact.filter((r) => !better.includes(r)).map((r) => r.name).join(', ') || 'none'}).`;
+  return `Ours is slower than flipOut on ${slow.length} of ${timed.length} meshes${slow.length ? ` (${slow.map((r) => r.name).join(', ')}: on a thin tube the Euclidean A* term knows nothing of the surface, and the search floods the tube between the ends; the landmark term, weighted by 0.75 / the dual graph's stretch to stay below the surface's distance (ShortestPathOptions::refined_landmark_share), bounds only part of the way, and the guide's corridor, below, is not yet accurate enough to bound it)` : ''}, and at least as often within 0.5% of the exact distance on ${better.length} of ${exact.length} (not on ${exact.filter((r) => !better.includes(r)).map((r) => r.name).join(', ') || 'none'}).`;
 }

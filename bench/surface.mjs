@@ -507,7 +507,7 @@ was set; the header says what each option does).
   0.92x on the knotted tube, others within 2% (section "Surface at scale", Landmark descent). When
   its strip beats the forward one, the search from the far end is left out (a further 0.87x on the
   coil, 0.96x on the knotted tube, 0.95x on the folded body).
-- **landmarks = 8, landmark_weight = 2, refined_landmark_scale = 0, landmark_min_faces = 16384**
+- **landmarks = 8, landmark_weight = 2, refined_landmark_share = 0.75, landmark_min_faces = 16384**
   (phase (i)'s landmark term, 2026-12-02, section "Surface at scale"). 8 landmarks take 16 bytes per
   triangle, what giving search records per edge rather than per node saved (18). Random whole-surface
   curves on the 384k-triangle coil (native, 10, loaded machine) took 356 ms at landmark_weight 1, 142
@@ -516,9 +516,17 @@ was set; the header says what each option does).
   spot_loop2_369k 0.82x (40 curves), spot_loop2_369k 0.93x (40), nefertiti 0.92x (40), the coil
   0.995x (15), the folded body 1.00x (8); the curves came out shorter in total by 0.5% (noisy spot),
   2.3% (spot_loop2_369k) and 0.8% (nefertiti): a greedier search hands the straightening strips
-  that settle more often on a longer local geodesic. 1 and 1.5 cost more (the search grows). The refined search (shortest paths) does not use them by default:
-  dual-graph distances overestimate the refined graph's by up to a third on the coil, and a scale that
-  makes the search cheap there is not admissible elsewhere (0.85: the coil's refined searches expand
+  that settle more often on a longer local geodesic. 1 and 1.5 cost more (the search grows). The refined search
+  (shortest paths) weighs them by 0.75 / the dual graph's stretch (2026-12-07): a landmark bounds the
+  dual graph's distance, which runs longer than the surface's by about that stretch, so the bound over
+  the stretch is one on the surface's distance; the share keeps a margin, as the stretch is a 90th
+  percentile over short distances. The term is used only in a search whose ends it bounds farther
+  apart than space does. Native, 40 random vertex pairs a mesh, against the Euclidean term alone,
+  interleaved: knotted tube 0.84x the time, coil 0.84x, folded body 0.98x, the Stanford dragon
+  (unseen) 0.97x, none more than 0.5% longer (a few shorter: other strips straighten further);
+  nefertiti, the spots and the UV sphere within 1% (their searches leave the term out). A share of 1:
+  the knotted tube 0.71x but 4 of 40 paths more than 0.5% longer. Before: a fixed scale that
+  makes the search cheap on the coil is not admissible elsewhere (0.85: the coil's refined searches expand
   23k nodes instead of 1.2M, but 90% of nefertiti's paths within 0.5% of exact instead of 100%; 0.5
   to 0.7 keep nefertiti's lengths but expand 0.8-1.2M nodes on the coil again). Even landmark distances
   that are exact (MMP from the same 8 landmark faces, an oracle, 2026-12-03) cut the coil's refined
