@@ -531,7 +531,9 @@ longer. The refined search's records reserved at the last search's size (no regr
 noise in wasm (knotted tube pairs); WebAssembly bulk memory and non-trapping float conversions: curves 0.98-0.99x
 in wasm, shortest paths unchanged. On the dragon: chord_min_turn 0.1 0.94x, 0.2 0.95x, 0.01 1.09x; guide from 12
 guide edges 0.96x, 48 1.12x; both 0.1 and 12: 0.91x, but nefertiti's curves 0.26% shorter and one noisy-spot curve
-45% longer (another local geodesic at the first level): not taken.`;
+45% longer (another local geodesic at the first level): not taken. chord_min_turn 0.1 alone, 40 curves on each of
+the eight meshes: 0.92x (nefertiti) to 1.02x (UV sphere), the knotted tube 0.96x, the dragon 0.96x, but sides of
+nefertiti, the noisy spot and the dragon up to 1.0-1.1% longer or shorter (other local geodesics): not taken for ~4%.`;
 
 const CORRIDOR_NOTE = `Refined search in the guide's corridor (2026-12-05, evening; CoarseGuide::corridor,
 ShortestPathOptions::guide_corridor_slack and guide_corridor_edges; built and tested, off by default). Shortest
