@@ -645,7 +645,7 @@ TEST(Landmarks, ShortestPathsStayAsShortAsWithoutLandmarks) {
   EXPECT_LT(sa.visited_nodes * 1.15, sb.visited_nodes) << sa.visited_nodes << " vs " << sb.visited_nodes;
 }
 
-TEST(Landmarks, TheRefinedSearchsTermStaysBelowSpaceOnAFlatSheet) {
+TEST(Landmarks, TheRefinedSearchKeepsTheTermBelowSpaceOnAFlatSheet) {
   // On a flat sheet the surface's distance is the straight line's, and the landmark term divided by
   // the dual graph's stretch (refined_landmark_share) stays below it: the refined search is the
   // Euclidean one, strip for strip and node for node. On this sheet of faces eight times longer
