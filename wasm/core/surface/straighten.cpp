@@ -472,16 +472,19 @@ void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead, int l
   };
   int first = flip.first, last = flip.last;
   pivots_.clear();
-  // (A slide's: every side vertex after apex j-back and before apex j+ahead; a glide's: every one
-  // after portal lo and before portal hi.)
+  // (A slide's: every side vertex from v back to the last bend it passes, apex j-back+1, and ahead
+  // to apex j+ahead-1; a glide's: every one after portal lo and before portal hi.)
   const int before = lo >= 0 ? lo : path_.apices[j - back].portal;
   const Apex& after = path_.apices[j + ahead];
   const bool all_before = back > 1 || lo >= 0, all_after = ahead > 1 || hi >= 0;
+  const int last_back = back > 1 ? path_.apices[j - back + 1].vertex : -1;
+  const int last_ahead = ahead > 1 ? path_.apices[j + ahead - 1].vertex : -1;
   for (int i = first - 1; i > before && (all_before || blocks(i));) {  // vertices before v, nearest first
     const int c = side_vertex(i);
     while (i > before + 1 && side_vertex(i - 1) == c) --i;
     pivots_.push_back(c);
     first = i--;
+    if (c == last_back) break;
   }
   std::reverse(pivots_.begin(), pivots_.end());  // in strip order
   pivots_.push_back(v);
@@ -492,6 +495,7 @@ void Straightener::zipper(size_t j, Flip& flip, size_t back, size_t ahead, int l
     while (i + 1 < n - 1 && side_vertex(i + 1) == c) ++i;
     pivots_.push_back(c);
     last = ++i;
+    if (c == last_ahead) break;
   }
   if (pivots_.size() == 1) return;
   // Around each pivot in turn on the side away from the strip, from strip[first] to strip[last].
@@ -848,6 +852,11 @@ bool Straightener::chord(size_t jp, size_t jq, const ChordRoom& room, Flip& flip
   }
   if (!other.empty() && other.back() == path_.strip[last]) other.pop_back(), laid.pop_back();
   if (last <= first) return false;
+  // The line's faces the strip's own (the walk met q's faces early and went round q back to the
+  // strip): nothing would change.
+  if (other.size() + 1 == static_cast<size_t>(last - first) &&
+      std::equal(other.begin(), other.end(), path_.strip.begin() + first + 1))
+    return false;
   flip.first = first, flip.last = last;
   flip.other.swap(other);  // (the walk's buffers are scratch: the next walk clears them)
   flip.laid.swap(laid);

@@ -160,8 +160,11 @@ class Straightener {
   // next to v, on v's side and between the neighbouring apices, that would still block the path with
   // v out of the way (they lie on v's side of the line between the neighbouring apices) are flipped
   // with it. Leaves `flip` as it is when no such vertex exists, or v's zipper did not shorten the
-  // path before. With `back` or `ahead` above 1 (a slide's), every boundary vertex on v's side
-  // between apex j-back and apex j+ahead is flipped.
+  // path before. With `back` or `ahead` above 1 (a slide's), every boundary vertex on v's side from
+  // v back to the last bend the slide passes (apex j-back+1) and ahead to apex j+ahead-1 is flipped:
+  // not the ones the path does not touch between those and the bends where it stops, which block
+  // nothing (flipped, they pushed the path round their far side: on the knotted tube of
+  // BENCHMARKS.md a path 1% longer, and the bend moved a vertex a pass, 2026-12-08).
   void zipper(size_t j, Flip& flip, size_t back = 1, size_t ahead = 1, int lo = -1, int hi = -1);
   // The slide of apex j: how many apices back (the return value) and ahead the path leaves the
   // boundary vertices next to v once v is flipped. A path pressed against a row of saddle vertices
@@ -190,7 +193,9 @@ class Straightener {
   // The chord flip of apex j: the faces along the straight line from apex j-1 (p) to apex j+1 (q),
   // followed across the mesh from p (aimed once more where the surface turned the line), then
   // around q to its strip faces. False (flip unusable) when the line meets a boundary or a vertex,
-  // misses q twice, or cannot make the path shorter; `room` bounds the faces it may replace.
+  // misses q twice, or cannot make the path shorter, or its faces are the strip's own (the walk met
+  // q's faces early and went round q back to the strip: nothing would change, and such a chord took
+  // its neighbours' faces pass after pass); `room` bounds the faces it may replace.
   bool chord(size_t j, const ChordRoom& room, Flip& flip);
   // The chord from apex jp to apex jq (jp < jq - 1, room from the faces around apex jp to those
   // around apex jq): the line across every bend between them at once, aimed again up to `aims`
