@@ -5,11 +5,16 @@
 // worth; here both cores are linked into one wasm module (each in its own namespace) and trace
 // every curve in turn, so the ratio holds up to about 1% (a tree against itself: 0.99-1.01).
 // Curves: the random polygons of BENCHMARKS.md (OLR, 5 levels, the same generator and seed).
+// --mesh: a file of ../shared/data/meshes, or any path to a mesh file. Meshes of 65,536 faces or
+// more get the coarse guide and landmarks the library gives them (SurfaceMesh's defaults), so that
+// the A/B runs what `npm run bench`'s "Surface at scale" measures.
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { parseArgs } from 'node:util';
+import { existsSync } from 'node:fs';
 import { SurfaceMesh, init, randomMeshPoints } from '../dist/index.js';
+import { GUIDE_MIN_FACES, guideTriangles } from '../dist/surface/coarse-guide.js';
 
 const root = new URL('..', import.meta.url).pathname;
 const data = join(root, '../shared/data');
@@ -60,7 +65,8 @@ await init();
 const curves = Number(values.curves);
 console.log(`A = ${ref} (${commit}), B = the working tree; ${curves} random curves per mesh, best of ${values.rounds} rounds`);
 for (const file of values.mesh) {
-  const mesh = await SurfaceMesh.load(readFileSync(join(data, 'meshes', file)), file);
+  const path = existsSync(file) ? file : join(data, 'meshes', file);
+  const mesh = await SurfaceMesh.load(readFileSync(path), path.split('/').pop());
   const points = randomMeshPoints(mesh, 4 * curves, 1);
   const meshBin = Buffer.alloc(8 + 8 * mesh.positions.length + 4 * mesh.triangles.length);
   meshBin.writeInt32LE(mesh.positions.length / 3, 0);
@@ -74,12 +80,18 @@ for (const file of values.mesh) {
     pointsBin.writeDoubleLE(p.uv[0], 8 + 20 * i);
     pointsBin.writeDoubleLE(p.uv[1], 16 + 20 * i);
   });
+  // The guide's triangles (mesh vertex indices), as SurfaceMesh builds them: int32 count, then 3 per.
+  const guide = mesh.faceCount >= GUIDE_MIN_FACES ? guideTriangles(mesh.positions, mesh.triangles) : null;
+  const guideBin = Buffer.alloc(4 + 4 * (guide?.length ?? 0));
+  guideBin.writeInt32LE(guide ? guide.length / 3 : 0, 0);
+  if (guide) Buffer.from(Int32Array.from(guide).buffer).copy(guideBin, 4);
   mesh.dispose();
+  writeFileSync(join(out, 'guide.bin'), guideBin);
   writeFileSync(join(out, 'mesh.bin'), meshBin);
   writeFileSync(join(out, 'points.bin'), pointsBin);
-  const r = JSON.parse(run('node', ['--no-experimental-fetch', module, join(out, 'mesh.bin'), join(out, 'points.bin'), String(curves), values.rounds]));
+  const r = JSON.parse(run('node', ['--no-experimental-fetch', module, join(out, 'mesh.bin'), join(out, 'points.bin'), String(curves), values.rounds, join(out, 'guide.bin')]));
   const change = (r.median_ratio - 1) * 100;
-  console.log(`${file}: median ${r.median_a_ms.toFixed(2)} -> ${r.median_b_ms.toFixed(2)} ms; per curve B/A median ${r.median_ratio.toFixed(3)} ` +
+  console.log(`${file}${guide ? ` (guide of ${guide.length / 3} faces)` : ''}: median ${r.median_a_ms.toFixed(2)} -> ${r.median_b_ms.toFixed(2)} ms; per curve B/A median ${r.median_ratio.toFixed(3)} ` +
     `(${change >= 0 ? '+' : ''}${change.toFixed(1)}%), total ${r.total_ratio.toFixed(3)}; mean length ${r.mean_length_a.toFixed(5)} -> ` +
     `${r.mean_length_b.toFixed(5)}, ${r.curves_changed} of ${r.curves} curves changed`);
 }

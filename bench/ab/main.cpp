@@ -9,10 +9,10 @@
 #include <vector>
 
 extern "C" {
-void* ab_init_A(const char*, const char*);
+void* ab_init_A(const char*, const char*, const char*);
 int ab_curves_A(void*);
 double ab_trace_A(void*, int, double*);
-void* ab_init_B(const char*, const char*);
+void* ab_init_B(const char*, const char*, const char*);
 int ab_curves_B(void*);
 double ab_trace_B(void*, int, double*);
 }
@@ -24,11 +24,12 @@ static double median(std::vector<double> x) {
 
 int main(int argc, char** argv) {
   if (argc < 5) {
-    fprintf(stderr, "usage: ab <mesh.bin> <points.bin> <curves> <rounds>\n");
+    fprintf(stderr, "usage: ab <mesh.bin> <points.bin> <curves> <rounds> [guide.bin]\n");
     return 2;
   }
-  void* a = ab_init_A(argv[1], argv[2]);
-  void* b = ab_init_B(argv[1], argv[2]);
+  const char* guide = argc > 5 ? argv[5] : nullptr;
+  void* a = ab_init_A(argv[1], argv[2], guide);
+  void* b = ab_init_B(argv[1], argv[2], guide);
   if (!a || !b) return 1;
   const int n = std::min({ab_curves_A(a), ab_curves_B(b), atoi(argv[3])});
   const int rounds = std::max(1, atoi(argv[4]));
@@ -55,7 +56,9 @@ int main(int argc, char** argv) {
     sa += ta[i], sb += tb[i], mla += la[i] / n, mlb += lb[i] / n;
     changed += la[i] != lb[i];
   }
-  printf("{\"curves\":%d,\"rounds\":%d,\"median_a_ms\":%.4f,\"median_b_ms\":%.4f,\"median_ratio\":%.4f,\"total_ratio\":%.4f,"
-         "\"mean_length_a\":%.10f,\"mean_length_b\":%.10f,\"curves_changed\":%d}\n",
-         n, rounds, median(ta), median(tb), median(ratio), sb / sa, mla, mlb, changed);
+  printf(
+      "{\"curves\":%d,\"rounds\":%d,\"median_a_ms\":%.4f,\"median_b_ms\":%.4f,\"median_ratio\":%.4f,\"total_ratio\":%."
+      "4f,"
+      "\"mean_length_a\":%.10f,\"mean_length_b\":%.10f,\"curves_changed\":%d}\n",
+      n, rounds, median(ta), median(tb), median(ratio), sb / sa, mla, mlb, changed);
 }

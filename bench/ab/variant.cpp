@@ -5,9 +5,9 @@
 #include "surface/curves.h"
 
 #include <chrono>
+#include <cstdio>
 #include <memory>
 #include <string>
-#include <cstdio>
 #include <vector>
 
 #define SPLINEKIT_AB_CAT2(a, b) a##b
@@ -33,8 +33,10 @@ bool read(FILE* in, std::vector<T>& out, size_t n) {
 }  // namespace
 
 // mesh: int32 #vertices, #faces, then float64 positions (3 per vertex), int32 triangles (3 per
-// face); points: int32 #points, then per point int32 face, float64 u, v.
-extern "C" void* SPLINEKIT_AB(ab_init_)(const char* mesh_path, const char* points_path) {
+// face); points: int32 #points, then per point int32 face, float64 u, v; guide (optional, null or a
+// count of 0 for none): int32 #faces, then int32 mesh vertex indices (3 per face), with which the
+// solver gets the coarse guide and the landmarks the library gives a guided mesh.
+extern "C" void* SPLINEKIT_AB(ab_init_)(const char* mesh_path, const char* points_path, const char* guide_path) {
   auto side = std::make_unique<Side>();
   FILE* in = fopen(mesh_path, "rb");
   int counts[2];
@@ -51,7 +53,24 @@ extern "C" void* SPLINEKIT_AB(ab_init_)(const char* mesh_path, const char* point
     fprintf(stderr, "%s\n", error.c_str());
     return nullptr;
   }
-  side->solver = std::make_unique<GeodesicSolver>(side->mesh);
+  std::vector<int> guide;
+  if (guide_path) {
+    in = fopen(guide_path, "rb");
+    int faces = 0;
+    if (!in || fread(&faces, sizeof(int), 1, in) != 1 || !read(in, guide, 3 * size_t(faces))) {
+      fprintf(stderr, "cannot read %s\n", guide_path);
+      return nullptr;
+    }
+    fclose(in);
+  }
+  ShortestPathOptions options;
+  if (!guide.empty()) options.landmarks = 4;  // (src/surface/mesh.ts, GUIDED_LANDMARKS)
+  side->solver = std::make_unique<GeodesicSolver>(side->mesh, options);
+  if (!guide.empty() &&
+      side->solver->set_coarse_guide(guide.data(), static_cast<int>(guide.size() / 3), error) != MeshStatus::kOk) {
+    fprintf(stderr, "guide: %s\n", error.c_str());
+    return nullptr;
+  }
   side->tracer = std::make_unique<CurveTracer>(*side->solver);
   in = fopen(points_path, "rb");
   int n = 0;
@@ -72,7 +91,8 @@ extern "C" int SPLINEKIT_AB(ab_curves_)(void* p) { return static_cast<int>(stati
 // Milliseconds to trace curve i; its length (in mesh diagonals) in *length.
 extern "C" double SPLINEKIT_AB(ab_trace_)(void* p, int i, double* length) {
   Side& side = *static_cast<Side*>(p);
-  const ControlPolygon polygon = {side.points[4 * i], side.points[4 * i + 1], side.points[4 * i + 2], side.points[4 * i + 3]};
+  const ControlPolygon polygon = {side.points[4 * i], side.points[4 * i + 1], side.points[4 * i + 2],
+                                  side.points[4 * i + 3]};
   const auto start = std::chrono::steady_clock::now();
   side.tracer->trace(polygon, TraceOptions{}, side.polyline);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
