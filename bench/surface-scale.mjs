@@ -535,6 +535,31 @@ guide edges 0.96x, 48 1.12x; both 0.1 and 12: 0.91x, but nefertiti's curves 0.26
 the eight meshes: 0.92x (nefertiti) to 1.02x (UV sphere), the knotted tube 0.96x, the dragon 0.96x, but sides of
 nefertiti, the noisy spot and the dragon up to 1.0-1.1% longer or shorter (other local geodesics): not taken for ~4%.`;
 
+const SLIDE_FIX_NOTE = `Slides that stopped far away (2026-12-08, Straightener::zipper; found by laying each flip of a pass on its
+own and comparing the path's length). A slide that passed the bends along a row of saddle vertices and stopped at a
+bend far along the strip also flipped the side vertices between the last bend it passed and that one: the path does
+not touch them and they block nothing, but flipped they pushed it round their far side. On the knotted tube such a
+slide alone made a 4.3-long path 0.04 longer, the pass's group failed, the largest turn went alone, and the next pass
+tried the same slide from the bend one vertex further on: 29 passes where 15 do. A slide now flips the row up to the
+last bend it passes. And a chord whose walk met the far apex's faces early and went round it back to the strip's own
+faces was kept as a flip that changed nothing, taking its neighbours' faces pass after pass; it is no flip now.
+Native, 40 random curves interleaved: coil 0.90x (the first-level sides' passes 14,014 -> 6,894 per 100 curves),
+knotted tube 0.95x, the other meshes' passes unchanged; bench:ab in wasm (now with the library's guide and
+landmarks on meshes of 65,536 faces or more), 100 curves, best of 2: coil median 12.32 -> 10.60 ms (per curve
+0.919, total 0.902), knotted tube 0.999. Flips of each kind that lengthened the path on their own, after the fix
+(12 long paths a mesh): plain zippers 47% on the knotted tube, 22% on the folded body, 25% on the dragon; glides
+5-20%; chords 2-7%; slides 0-4%; 10-11% of the groups failed.
+Measured and dropped the same day: Steiner nodes 1 per edge instead of 2 in the refined search (shortest paths
+0.45-0.52x the time on every mesh, the coil 2.55 -> ~1.2 times flipOut, but against 2 per edge one knotted-tube pair
+of 30 came out 0.65% longer and 15 of 200 pairs on a noisy cube not tuned on up to 1.15%: not within 0.5% often
+enough); a failed group falling back to all its flips' semi-stars instead of the largest turn alone (each shortens
+its own stretch; 0.91x on the knotted tube before the slide fix, nothing after it); zippers that leave a saddle
+vertex where the path may bend by its excess (zipper failures on the knotted tube 47% -> 16%, time 0.98-1.0x);
+spans across runs of bends at saddles too where each turns by more than its excess (1.5-1.6x: spans across 40-100
+bends walk thousands of faces and fail); spans tried again after passes without a run, with or without a memo of
+the failed ends (folded body 1.04x, nefertiti 1.05x: spans across the limbs' flat stretches succeed but walk 1.5
+times the faces, and the bends come back); slide_min 2 and window_min_faces 256 (within 1%).`;
+
 const CORRIDOR_NOTE = `Refined search in the guide's corridor (2026-12-05, evening; CoarseGuide::corridor,
 ShortestPathOptions::guide_corridor_slack and guide_corridor_edges; built and tested, off by default). Shortest
 paths search the refined graph, whose A* term is Euclidean (no landmark term is admissible there): on the coil it
@@ -768,6 +793,8 @@ ${THIN_NOTE}
 ${SPANS_NOTE}
 
 ${LATE_NOTE}
+
+${SLIDE_FIX_NOTE}
 
 Work per curve, median / p99 over the curves (SurfaceMeshHandle counters, summed over a curve's
 shortest paths): paths searched, of those the ones whose strips followed the coarse guide, paths seeded
