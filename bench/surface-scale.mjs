@@ -558,7 +558,13 @@ vertex where the path may bend by its excess (zipper failures on the knotted tub
 spans across runs of bends at saddles too where each turns by more than its excess (1.5-1.6x: spans across 40-100
 bends walk thousands of faces and fail); spans tried again after passes without a run, with or without a memo of
 the failed ends (folded body 1.04x, nefertiti 1.05x: spans across the limbs' flat stretches succeed but walk 1.5
-times the faces, and the bends come back); slide_min 2 and window_min_faces 256 (within 1%).`;
+times the faces, and the bends come back); chords at convex and flat vertices however small the turn (the folded
+body's limbs are flat, where a chord is exact: 0.94x the passes, but 1.09x the time on the folded body and 1.13x on
+the UV sphere, whose walks cross its thin faces); slide_min 2 and window_min_faces 256 (within 1%). Where the
+remaining time goes, natively: on the coil the guide's own path is 31% of a curve (its exact search expands the
+band of the guide's tube between the ends, and its straightening, about equal shares), the fine
+straightening 45-60% on every mesh; laying out the strips of seeded paths again (their pieces' layouts are known)
+would save about 5% (measured by its share of the profile, not built).`;
 
 const CORRIDOR_NOTE = `Refined search in the guide's corridor (2026-12-05, evening; CoarseGuide::corridor,
 ShortestPathOptions::guide_corridor_slack and guide_corridor_edges; built and tested, off by default). Shortest
