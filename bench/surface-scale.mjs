@@ -563,8 +563,10 @@ body's limbs are flat, where a chord is exact: 0.94x the passes, but 1.09x the t
 the UV sphere, whose walks cross its thin faces); slide_min 2 and window_min_faces 256 (within 1%). Where the
 remaining time goes, natively: on the coil the guide's own path is 31% of a curve (its exact search expands the
 band of the guide's tube between the ends, and its straightening, about equal shares), the fine
-straightening 45-60% on every mesh; laying out the strips of seeded paths again (their pieces' layouts are known)
-would save about 5% (measured by its share of the profile, not built).`;
+straightening 45-60% on every mesh. Seeded paths laid out from their pieces' layouts (kept with every path, moved
+rigidly and joined) instead of face by face: the same passes and flips, but 1.03-1.06x the time in wasm (bench:ab,
+knotted tube, coil, nefertiti): copying the layouts with every path and sub-path costs more than laying the
+seeded strips again.`;
 
 const CORRIDOR_NOTE = `Refined search in the guide's corridor (2026-12-05, evening; CoarseGuide::corridor,
 ShortestPathOptions::guide_corridor_slack and guide_corridor_edges; built and tested, off by default). Shortest
