@@ -262,6 +262,30 @@ TEST(StraightenAtScale, SlidesTakePassesOffTheCoilAndLeaveThePathsAsLong) {
   EXPECT_LT(with.passes, 0.85 * without.passes);
 }
 
+// `count` pairs of random points (`seed`) on `mesh`, each one's greedy dual strip begun in a
+// Straightener and straightened pass by pass: `visit(s, k)` looks at the straightener of pair k before
+// each pass.
+template <class Visit>
+void before_each_pass(const TriMesh& mesh, unsigned seed, int count, Visit visit) {
+  GeodesicSolver solver(mesh);
+  std::vector<int> marks(mesh.triangles.size(), -1);
+  Straightener s(mesh, marks);
+  std::mt19937 rng(seed);
+  for (int k = 0; k < count; ++k) {
+    const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
+    std::vector<int> strip;
+    ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
+    GeodesicPath path;
+    point_in_face(mesh, a, strip.front(), path.start);
+    point_in_face(mesh, b, strip.back(), path.end);
+    s.begin(path.start, path.end, strip);
+    for (int pass = 0; pass < 200; ++pass) {
+      visit(s, k);
+      if (!s.pass()) break;
+    }
+  }
+}
+
 // A slide flips the row of vertices a bend would slide along, from the bend back to the last bend it
 // passes (apex j-back+1) and ahead to the last one there (apex j+ahead-1), not on to the bends where
 // it stops: between the last bend passed and those lie side vertices the path does not touch, which
@@ -272,43 +296,28 @@ TEST(StraightenAtScale, SlidesTakePassesOffTheCoilAndLeaveThePathsAsLong) {
 TEST(StraightenAtScale, ASlideFlipsTheRowUpToTheLastBendItPassesAndShortensThePath) {
   for (const Shape& shape : {Shape{"knotted tube", testing::build(testing::knot_tube(1200, 24))},
                              Shape{"coil", testing::build(testing::coil(800, 16))}}) {
-    const TriMesh& mesh = shape.mesh;
-    GeodesicSolver solver(mesh);
-    std::vector<int> marks(mesh.triangles.size(), -1);
-    Straightener s(mesh, marks);
-    std::mt19937 rng(43);
     int slides = 0, shorter = 0;
-    for (int k = 0; k < 30; ++k) {
-      const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
-      std::vector<int> strip;
-      ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
-      GeodesicPath path;
-      point_in_face(mesh, a, strip.front(), path.start);
-      point_in_face(mesh, b, strip.back(), path.end);
-      s.begin(path.start, path.end, strip);
-      for (int pass = 0; pass < 200; ++pass) {
-        const std::vector<Apex> apices = s.apices();
-        for (size_t j = 1; j + 1 < apices.size(); ++j) {
-          if (apices[j].vertex < 0) continue;
-          size_t ahead;
-          const size_t back = s.slide(j, ahead);
-          if (back == 1 && ahead == 1) continue;
-          int first, last;
-          Flip flip;
-          if (!s.run_of(apices[j].vertex, apices[j].portal, first, last) ||
-              !s.flip(j, turn_at(apices, j), first, last, flip))
-            continue;
-          s.zipper(j, flip, back, ahead);
-          if (!flip.chain) continue;  // (the vertex's zipper failed before)
-          const std::vector<int>& pivots = s.zipper_pivots();
-          if (back > 1) EXPECT_EQ(pivots.front(), apices[j - back + 1].vertex) << shape.name << " path " << k;
-          if (ahead > 1) EXPECT_EQ(pivots.back(), apices[j + ahead - 1].vertex) << shape.name << " path " << k;
-          ++slides;
-          shorter += s.lay_trial({&flip}) < s.length();
-        }
-        if (!s.pass()) break;
+    before_each_pass(shape.mesh, 43, 30, [&](Straightener& s, int k) {
+      const std::vector<Apex> apices = s.apices();
+      for (size_t j = 1; j + 1 < apices.size(); ++j) {
+        if (apices[j].vertex < 0) continue;
+        size_t ahead;
+        const size_t back = s.slide(j, ahead);
+        if (back == 1 && ahead == 1) continue;
+        int first, last;
+        Flip flip;
+        if (!s.run_of(apices[j].vertex, apices[j].portal, first, last) ||
+            !s.flip(j, turn_at(apices, j), first, last, flip))
+          continue;
+        s.zipper(j, flip, back, ahead);
+        if (!flip.chain) continue;  // (the vertex's zipper failed before)
+        const std::vector<int>& pivots = s.zipper_pivots();
+        if (back > 1) EXPECT_EQ(pivots.front(), apices[j - back + 1].vertex) << shape.name << " path " << k;
+        if (ahead > 1) EXPECT_EQ(pivots.back(), apices[j + ahead - 1].vertex) << shape.name << " path " << k;
+        ++slides;
+        shorter += s.lay_trial({&flip}) < s.length();
       }
-    }
+    });
     // (knotted tube 109 of 109, coil 68 of 68 when written; up to the bends where the slides stop, 96
     // of 140 and 63 of 69)
     EXPECT_GT(slides, 20) << shape.name;
@@ -321,42 +330,27 @@ TEST(StraightenAtScale, ASlideFlipsTheRowUpToTheLastBendItPassesAndShortensThePa
 // after pass, and count as kept). Every chord made here replaces some face of the strip.
 TEST(StraightenAtScale, AChordChangesTheStrip) {
   for (const Shape& shape : shapes()) {
-    const TriMesh& mesh = shape.mesh;
-    GeodesicSolver solver(mesh);
-    std::vector<int> marks(mesh.triangles.size(), -1);
-    Straightener s(mesh, marks);
-    std::mt19937 rng(47);
     int chords = 0;
-    for (int k = 0; k < 30; ++k) {
-      const MeshPoint a = random_point(mesh, rng), b = random_point(mesh, rng);
-      std::vector<int> strip;
-      ASSERT_TRUE(solver.initial_strip(a, b, strip, nullptr, SearchGraph::kDual));
-      GeodesicPath path;
-      point_in_face(mesh, a, strip.front(), path.start);
-      point_in_face(mesh, b, strip.back(), path.end);
-      s.begin(path.start, path.end, strip);
-      for (int pass = 0; pass < 200; ++pass) {
-        const std::vector<Apex> apices = s.apices();
-        const int n = static_cast<int>(s.strip().size());
-        for (size_t j = 1; j + 1 < apices.size(); ++j) {
-          ChordRoom room{0, n - 1, n - 1};
-          int unused;
-          if ((apices[j - 1].vertex >= 0 &&
-               !s.run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused)) ||
-              (apices[j + 1].vertex >= 0 &&
-               !s.run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last)))
-            continue;
-          Flip flip;
-          if (!s.chord(j, room, flip)) continue;
-          ++chords;
-          const std::vector<int>& faces = s.strip();
-          EXPECT_FALSE(flip.other.size() + 1 == static_cast<size_t>(flip.last - flip.first) &&
-                       std::equal(flip.other.begin(), flip.other.end(), faces.begin() + flip.first + 1))
-              << shape.name << " path " << k << " apex " << j;
-        }
-        if (!s.pass()) break;
+    before_each_pass(shape.mesh, 47, 30, [&](Straightener& s, int k) {
+      const std::vector<Apex>& apices = s.apices();
+      const int n = static_cast<int>(s.strip().size());
+      for (size_t j = 1; j + 1 < apices.size(); ++j) {
+        ChordRoom room{0, n - 1, n - 1};
+        int unused;
+        if ((apices[j - 1].vertex >= 0 &&
+             !s.run_of(apices[j - 1].vertex, apices[j - 1].portal, room.p_first, unused)) ||
+            (apices[j + 1].vertex >= 0 &&
+             !s.run_of(apices[j + 1].vertex, apices[j + 1].portal, room.q_first, room.q_last)))
+          continue;
+        Flip flip;
+        if (!s.chord(j, room, flip)) continue;
+        ++chords;
+        const std::vector<int>& faces = s.strip();
+        EXPECT_FALSE(flip.other.size() + 1 == static_cast<size_t>(flip.last - flip.first) &&
+                     std::equal(flip.other.begin(), flip.other.end(), faces.begin() + flip.first + 1))
+            << shape.name << " path " << k << " apex " << j;
       }
-    }
+    });
     EXPECT_GT(chords, 50) << shape.name;
   }
 }
