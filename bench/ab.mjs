@@ -9,10 +9,9 @@
 // more get the coarse guide and landmarks the library gives them (SurfaceMesh's defaults), so that
 // the A/B runs what `npm run bench`'s "Surface at scale" measures.
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { parseArgs } from 'node:util';
-import { existsSync } from 'node:fs';
 import { SurfaceMesh, init, randomMeshPoints } from '../dist/index.js';
 import { GUIDE_MIN_FACES, guideTriangles } from '../dist/surface/coarse-guide.js';
 

@@ -57,8 +57,7 @@ int main(int argc, char** argv) {
     changed += la[i] != lb[i];
   }
   printf(
-      "{\"curves\":%d,\"rounds\":%d,\"median_a_ms\":%.4f,\"median_b_ms\":%.4f,\"median_ratio\":%.4f,\"total_ratio\":%."
-      "4f,"
-      "\"mean_length_a\":%.10f,\"mean_length_b\":%.10f,\"curves_changed\":%d}\n",
+      "{\"curves\":%d,\"rounds\":%d,\"median_a_ms\":%.4f,\"median_b_ms\":%.4f,\"median_ratio\":%.4f,"
+      "\"total_ratio\":%.4f,\"mean_length_a\":%.10f,\"mean_length_b\":%.10f,\"curves_changed\":%d}\n",
       n, rounds, median(ta), median(tb), median(ratio), sb / sa, mla, mlb, changed);
 }
