@@ -14,6 +14,7 @@ import { join } from 'node:path';
 import { parseArgs } from 'node:util';
 import { SurfaceMesh, init, randomMeshPoints } from '../dist/index.js';
 import { GUIDE_MIN_FACES, guideTriangles } from '../dist/surface/coarse-guide.js';
+import { DEFAULT_LANDMARKS, GUIDED_LANDMARKS } from '../dist/surface/mesh.js';
 
 const root = new URL('..', import.meta.url).pathname;
 const data = join(root, '../shared/data');
@@ -79,11 +80,13 @@ for (const file of values.mesh) {
     pointsBin.writeDoubleLE(p.uv[0], 8 + 20 * i);
     pointsBin.writeDoubleLE(p.uv[1], 16 + 20 * i);
   });
-  // The guide's triangles (mesh vertex indices), as SurfaceMesh builds them: int32 count, then 3 per.
+  // The search's landmarks and the guide's triangles (mesh vertex indices), as SurfaceMesh chooses
+  // and builds them: int32 landmarks, int32 #faces, then 3 indices per face.
   const guide = mesh.faceCount >= GUIDE_MIN_FACES ? guideTriangles(mesh.positions, mesh.triangles) : null;
-  const guideBin = Buffer.alloc(4 + 4 * (guide?.length ?? 0));
-  guideBin.writeInt32LE(guide ? guide.length / 3 : 0, 0);
-  if (guide) Buffer.from(Int32Array.from(guide).buffer).copy(guideBin, 4);
+  const guideBin = Buffer.alloc(8 + 4 * (guide?.length ?? 0));
+  guideBin.writeInt32LE(guide ? GUIDED_LANDMARKS : DEFAULT_LANDMARKS, 0);
+  guideBin.writeInt32LE(guide ? guide.length / 3 : 0, 4);
+  if (guide) Buffer.from(Int32Array.from(guide).buffer).copy(guideBin, 8);
   mesh.dispose();
   writeFileSync(join(out, 'guide.bin'), guideBin);
   writeFileSync(join(out, 'mesh.bin'), meshBin);

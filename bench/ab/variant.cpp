@@ -33,9 +33,9 @@ bool read(FILE* in, std::vector<T>& out, size_t n) {
 }  // namespace
 
 // mesh: int32 #vertices, #faces, then float64 positions (3 per vertex), int32 triangles (3 per
-// face); points: int32 #points, then per point int32 face, float64 u, v; guide (optional, null or a
-// count of 0 for none): int32 #faces, then int32 mesh vertex indices (3 per face), with which the
-// solver gets the coarse guide and the landmarks the library gives a guided mesh.
+// face); points: int32 #points, then per point int32 face, float64 u, v; guide (optional): int32
+// landmarks, int32 #faces (0: no guide), then int32 mesh vertex indices (3 per face), the landmarks
+// and coarse guide the library gives the mesh (src/surface/mesh.ts).
 extern "C" void* SPLINEKIT_AB(ab_init_)(const char* mesh_path, const char* points_path, const char* guide_path) {
   auto side = std::make_unique<Side>();
   FILE* in = fopen(mesh_path, "rb");
@@ -54,17 +54,17 @@ extern "C" void* SPLINEKIT_AB(ab_init_)(const char* mesh_path, const char* point
     return nullptr;
   }
   std::vector<int> guide;
+  ShortestPathOptions options;
   if (guide_path) {
     in = fopen(guide_path, "rb");
-    int faces = 0;
-    if (!in || fread(&faces, sizeof(int), 1, in) != 1 || !read(in, guide, 3 * size_t(faces))) {
+    int header[2];  // landmarks, #faces
+    if (!in || fread(header, sizeof(int), 2, in) != 2 || !read(in, guide, 3 * size_t(header[1]))) {
       fprintf(stderr, "cannot read %s\n", guide_path);
       return nullptr;
     }
     fclose(in);
+    options.landmarks = header[0];
   }
-  ShortestPathOptions options;
-  if (!guide.empty()) options.landmarks = 4;  // (src/surface/mesh.ts, GUIDED_LANDMARKS)
   side->solver = std::make_unique<GeodesicSolver>(side->mesh, options);
   if (!guide.empty() &&
       side->solver->set_coarse_guide(guide.data(), static_cast<int>(guide.size() / 3), error) != MeshStatus::kOk) {

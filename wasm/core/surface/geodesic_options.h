@@ -135,20 +135,17 @@ struct ShortestPathOptions {
   // (">0.5%": paths more than 0.5% longer than its): share 0.75: knotted tube 0.84x the time (none
   // >0.5%, 2 shorter), coil 0.84x (none), folded body 0.98x (none, 6 shorter), the meshes whose
   // searches leave it out within 1%; share 1: knotted tube 0.71x but 4 of 40 >0.5% (up to 1.13%),
-  // folded body 0.80x and one 0.53% longer (both without the gate). Before: an absolute
-  // scale of 0.85 made the search ~40 times cheaper on that
-  // coil (2026-12-02, before windows) but only 90% of nefertiti's paths stayed within
-  // 0.5% of the exact distance (BENCHMARKS.md, "Surface at scale"). Also tried for the refined
-  // search (2026-12-02, on the 384k-triangle coil): landmark distances on a "collapsed" refined graph
-  // (one node per edge for its Steiner nodes, links the nearest node pairs: never longer than the
-  // refined graph, so admissible) bound only ~0.4 of the distance and expanded as many nodes; on the
-  // refined graph itself (exact, consistent only up to moving the face's value to the node) the
-  // precompute took 1.2 s for 8 landmarks on a 25.6k-triangle coil, and the A* had to reopen nodes
-  // to stay exact (more expansions than without);
-  // a vertex potential made 1-Lipschitz per face by lowering vertices does not converge (lowering one
-  // face's vertex steepens its neighbours'); a corridor around the dual graph's shortest path misses
-  // the geodesic on grid-like meshes (dual shortest paths wander across a band of equal-length
-  // staircases), giving longer paths.
+  // folded body 0.80x and one 0.53% longer (both without the gate). Before: an absolute scale of
+  // 0.85 made the search ~40 times cheaper on that coil (2026-12-02, before windows) but only 90% of
+  // nefertiti's paths stayed within 0.5% of the exact distance (BENCHMARKS.md, "Surface at scale"). Also tried for the
+  // refined search (2026-12-02, on the 384k-triangle coil): landmark distances on a "collapsed" refined graph (one node
+  // per edge for its Steiner nodes, links the nearest node pairs: never longer than the refined graph, so admissible)
+  // bound only ~0.4 of the distance and expanded as many nodes; on the refined graph itself (exact, consistent only up
+  // to moving the face's value to the node) the precompute took 1.2 s for 8 landmarks on a 25.6k-triangle coil, and the
+  // A* had to reopen nodes to stay exact (more expansions than without); a vertex potential made 1-Lipschitz per face
+  // by lowering vertices does not converge (lowering one face's vertex steepens its neighbours'); a corridor around the
+  // dual graph's shortest path misses the geodesic on grid-like meshes (dual shortest paths wander across a band of
+  // equal-length staircases), giving longer paths.
   int landmarks = 8;                     // landmarks per mesh (2 bytes per face each); 0: none
   int landmark_min_faces = 16384;        // smaller components get none: they search fast enough on the
                                          // Euclidean term
